@@ -1,0 +1,5 @@
+#include "app/cli.h"
+#include <cstdio>
+namespace coilsim {
+int runCli(int, char**) { std::puts("coilsim"); return 0; }
+}

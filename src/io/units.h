@@ -1,0 +1,22 @@
+#pragma once
+// The one place where edge units (files, UI: millimetres, GPa, g/cm3,
+// degrees) become SI and back. Nothing else in coilsim converts units.
+#include <cmath>
+
+namespace coilsim::units {
+
+inline constexpr double kMetresPerMm = 1e-3;
+inline constexpr double kPaPerGPa = 1e9;
+inline constexpr double kKgM3PerGCm3 = 1e3;
+inline constexpr double kRadPerDeg = M_PI / 180.0;
+
+inline constexpr double mmToM(double mm) { return mm * kMetresPerMm; }
+inline constexpr double mToMm(double m) { return m / kMetresPerMm; }
+inline constexpr double gpaToPa(double gpa) { return gpa * kPaPerGPa; }
+inline constexpr double paToGpa(double pa) { return pa / kPaPerGPa; }
+inline constexpr double gcm3ToKgm3(double g) { return g * kKgM3PerGCm3; }
+inline constexpr double kgm3ToGcm3(double k) { return k / kKgM3PerGCm3; }
+inline constexpr double degToRad(double d) { return d * kRadPerDeg; }
+inline constexpr double radToDeg(double r) { return r / kRadPerDeg; }
+
+}  // namespace coilsim::units

@@ -1,0 +1,50 @@
+#include "physics/assembly.h"
+
+#include "physics/beam.h"
+
+namespace coilsim {
+
+double assembleRod(const Model& model, int rodIndex, RodState& rod, double time, double loadFactor, bool withTangent) {
+  const RodModel& rm = model.rods[rodIndex];
+  RodWorkspace& w = rod.work;
+  for (auto& f : w.force) f.setZero();
+  for (auto& k : w.effectK) k.setZero();
+  for (auto& d : w.effectD) d.setZero();
+  if (withTangent) w.stiffness.setZero();
+
+  double energy = 0;
+  BeamEval ev;
+  for (int e = 0; e < rm.nbeam(); ++e) {
+    evalBeam(rm.beams[e], rod.x[e], rod.q[e], rod.x[e + 1], rod.q[e + 1], withTangent, ev);
+    w.force[e] += ev.forceA;
+    w.force[e + 1] += ev.forceB;
+    energy += ev.energy;
+    if (withTangent) {
+      w.stiffness.diag[e] += ev.kaa;
+      w.stiffness.diag[e + 1] += ev.kbb;
+      w.stiffness.lower[e] += ev.kba;
+    }
+  }
+  for (const NodalLoad& l : rm.loads) {
+    w.force[l.node].head<3>() += loadFactor * l.force;
+    w.force[l.node].tail<3>() += loadFactor * l.moment;
+  }
+  RodForces out{w.force, w.effectK, w.effectD};
+  const EffectContext ctx{model, rm, rod, time, loadFactor};
+  for (const EffectUse& u : model.effects)
+    if (u.enabled) u.effect->apply(ctx, u.values, out);
+  return energy;
+}
+
+Mat3 nodeInertiaGlobal(const RodModel& rod, const Quat& q, int node) {
+  const Mat3 r = q.toRotationMatrix();
+  return r * rod.nodeInertia[node].asDiagonal() * r.transpose();
+}
+
+void collectFixedDofs(const RodModel& model, RodState& rod) {
+  auto& mask = rod.work.fixedMask;
+  std::fill(mask.begin(), mask.end(), 0u);
+  for (const Constraint& c : model.constraints) mask[c.node] |= c.mask;
+}
+
+}  // namespace coilsim

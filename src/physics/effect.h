@@ -1,0 +1,80 @@
+#pragma once
+// A physical effect (gravity, buoyancy, drag, contact...) is a small class
+// behind this interface, registered by name in builtin_effects.cpp, so that
+// adding one is one new file plus one line. Parameter values live in the
+// Model (EffectUse), in SI, so an Effect object itself is stateless and shared.
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "physics/math.h"
+#include "physics/param.h"
+
+namespace coilsim {
+
+struct Model;
+struct RodModel;
+struct RodState;
+
+// What an effect reads for one rod.
+struct EffectContext {
+  const Model& model;
+  const RodModel& rod;
+  const RodState& state;
+  double time = 0;        // s
+  double loadFactor = 1;  // static continuation scales external effects by this
+};
+
+// Where an effect writes for one rod; all arrays have one entry per node.
+struct RodForces {
+  std::vector<Vec6>& force;      // force (N, rows 0-2) and moment (N m, rows 3-5), global
+  std::vector<Mat6>& stiffness;  // -d force / d (position, rotation), added to the implicit matrix
+  std::vector<Mat6>& damping;    // -d force / d (velocity, angular velocity)
+};
+
+class Effect {
+ public:
+  virtual ~Effect() = default;
+  virtual std::string_view name() const = 0;
+  virtual std::string_view description() const = 0;
+  virtual std::span<const ParamSpec> params() const { return {}; }
+  // Adds this effect's forces (and their derivatives where they matter for
+  // stability) for one rod. `values` are SI, one per params() entry.
+  virtual void apply(const EffectContext& ctx, std::span<const double> values, RodForces& out) const = 0;
+  // Potential energy of a conservative effect (J), for energy bookkeeping.
+  virtual double energy(const EffectContext&, std::span<const double>) const { return 0; }
+};
+
+// One effect switched into a model, with its parameter values (SI).
+struct EffectUse {
+  const Effect* effect = nullptr;
+  std::vector<double> values;
+  bool enabled = true;
+  std::string_view name() const { return effect->name(); }
+  // Value of the parameter called `param`; throws std::out_of_range if none.
+  double value(std::string_view param) const;
+  void set(std::string_view param, double si);
+};
+
+class EffectRegistry {
+ public:
+  // The process-wide registry, with the built-in effects already added.
+  static EffectRegistry& global();
+  // Takes ownership; throws std::invalid_argument if the name is taken.
+  const Effect* add(std::unique_ptr<Effect> effect);
+  const Effect* find(std::string_view name) const;
+  std::vector<const Effect*> all() const;
+  // An EffectUse with default values; throws std::invalid_argument naming
+  // the unknown effect and listing the known ones.
+  EffectUse use(std::string_view name) const;
+
+ private:
+  std::vector<std::unique_ptr<Effect>> effects_;
+};
+
+// Adds the built-in effects; the one place a new effect gets its line.
+void registerBuiltinEffects(EffectRegistry& registry);
+
+}  // namespace coilsim

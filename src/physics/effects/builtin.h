@@ -1,0 +1,11 @@
+#pragma once
+// Factories of the built-in effects, one per file in this folder.
+#include <memory>
+
+#include "physics/effect.h"
+
+namespace coilsim {
+std::unique_ptr<Effect> makeGravityEffect();
+std::unique_ptr<Effect> makeBuoyancyEffect();
+std::unique_ptr<Effect> makeDragEffect();
+}  // namespace coilsim

@@ -1,0 +1,58 @@
+#include <cmath>
+
+#include "physics/beam.h"
+#include "physics/integrator.h"
+
+namespace coilsim {
+
+// A step result is unhealthy if anything is non-finite, moves faster than a
+// coil can, or a beam is stretched or crushed beyond any elastic meaning.
+std::string checkHealth(const Model& model, const State& state) {
+  const HealthLimits& lim = model.health;
+  for (size_t k = 0; k < model.rods.size(); ++k) {
+    const RodModel& rm = model.rods[k];
+    const RodState& r = state.rods[k];
+    const std::string where = "rod '" + rm.name + "' node ";
+    for (int i = 0; i < rm.nnode; ++i) {
+      if (!r.x[i].allFinite() || !r.q[i].coeffs().allFinite() || !r.v[i].allFinite() || !r.w[i].allFinite())
+        return where + std::to_string(i) + ": non-finite position, rotation or velocity";
+      if (r.v[i].norm() > lim.maxSpeed)
+        return where + std::to_string(i) + ": speed " + std::to_string(r.v[i].norm()) + " m/s exceeds " +
+               std::to_string(lim.maxSpeed) + " m/s (numerical blow-up)";
+      if (r.w[i].norm() > lim.maxAngularSpeed)
+        return where + std::to_string(i) + ": angular speed exceeds " + std::to_string(lim.maxAngularSpeed) + " rad/s";
+    }
+    for (int e = 0; e < rm.nbeam(); ++e) {
+      const double strain = (r.x[e + 1] - r.x[e]).norm() / rm.beams[e].length - 1.0;
+      if (std::abs(strain) > lim.maxAxialStrain)
+        return "rod '" + rm.name + "' beam " + std::to_string(e) + ": axial strain " + std::to_string(strain) +
+               " beyond " + std::to_string(lim.maxAxialStrain);
+    }
+  }
+  return {};
+}
+
+Energy computeEnergy(const Model& model, const State& state) {
+  Energy en;
+  BeamEval ev;
+  for (size_t k = 0; k < model.rods.size(); ++k) {
+    const RodModel& rm = model.rods[k];
+    const RodState& r = state.rods[k];
+    for (int i = 0; i < rm.nnode; ++i) {
+      const Mat3 R = r.q[i].toRotationMatrix();
+      const Vec3 wBody = R.transpose() * r.w[i];
+      en.kinetic += 0.5 * rm.nodeMass[i] * r.v[i].squaredNorm() + 0.5 * wBody.dot(rm.nodeInertia[i].cwiseProduct(wBody));
+    }
+    for (int e = 0; e < rm.nbeam(); ++e) {
+      evalBeam(rm.beams[e], r.x[e], r.q[e], r.x[e + 1], r.q[e + 1], false, ev);
+      en.elastic += ev.energy;
+    }
+    const EffectContext ctx{model, rm, r, state.time, 1.0};
+    for (const EffectUse& u : model.effects)
+      if (u.enabled) en.potential += u.effect->energy(ctx, u.values);
+    for (const NodalLoad& l : rm.loads) en.potential -= l.force.dot(r.x[l.node]);  // moments: no potential kept
+  }
+  return en;
+}
+
+}  // namespace coilsim

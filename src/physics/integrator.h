@@ -1,0 +1,61 @@
+#pragma once
+// Time stepping and static equilibrium. Both take a Model and a State and
+// change only the State; on failure the State is left as it was before.
+#include <string>
+
+#include "physics/model.h"
+#include "physics/state.h"
+
+namespace coilsim {
+
+enum class StepStatus { Ok, BlowUp, SolverFailure };
+
+struct StepReport {
+  StepStatus status = StepStatus::Ok;
+  std::string message;  // empty when Ok
+  bool ok() const { return status == StepStatus::Ok; }
+};
+
+// One implicit Euler step of length model.timeStep (Baraff & Witkin 1998
+// linearisation, plus model.newtonIterations - 1 further Newton iterations):
+//   [(1 + h a) M + h D_eff + (h b + h^2) K] dv = h (f - (a M + b K + D_eff) v - h K v)
+// with Rayleigh damping a M + b K, solved per rod by the O(n) block
+// tridiagonal Cholesky. Constrained DOFs move to their targets. If the result
+// is not finite, too fast or too strained, the step is refused: the State is
+// restored, state.blowups is counted and a warning is recorded once.
+StepReport step(const Model& model, State& state);
+
+// Advances every constraint target of the model's prescribed motion by dt.
+void advanceTargets(const Model& model, State& state, double dt);
+
+struct StaticOptions {
+  int loadSteps = 10;          // equal load increments from 0 to full load
+  int maxIterations = 60;      // Newton iterations per increment
+  int maxBisections = 10;      // halvings of a failed increment
+  double positionTolerance = 1e-10;  // relative to rod length, per iteration update
+  double rotationTolerance = 1e-9;   // rad
+};
+
+struct StaticReport {
+  bool converged = false;
+  int increments = 0;   // load increments taken (including bisected ones)
+  int iterations = 0;   // Newton iterations in all
+  std::string message;  // why it failed
+};
+
+// Static equilibrium under the full load (gravity, loads, effects), reached
+// by load stepping with Newton iterations on the co-rotational tangent;
+// failing increments are bisected. Velocities are zeroed. On failure the
+// State holds the last converged increment and the report says why.
+StaticReport solveStatic(const Model& model, State& state, const StaticOptions& options = {});
+
+struct Energy {
+  double kinetic = 0, elastic = 0, potential = 0;  // J
+  double total() const { return kinetic + elastic + potential; }
+};
+Energy computeEnergy(const Model& model, const State& state);
+
+// Empty when the state is healthy, else what is wrong (node and quantity).
+std::string checkHealth(const Model& model, const State& state);
+
+}  // namespace coilsim
