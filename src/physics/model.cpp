@@ -39,6 +39,7 @@ RodModel compileRod(const RodDef& d) {
 
   RodModel r;
   r.name = d.name;
+  r.role = d.role;
   r.nnode = nnode;
   r.material = d.material;
   r.section = d.section;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "physics/draw_data.h"
 #include "physics/effect.h"
 #include "physics/math.h"
 #include "physics/rest_shape.h"
@@ -35,6 +36,7 @@ struct NodalLoad {
 // What a user specifies for one rod (already in SI, already checked).
 struct RodDef {
   std::string name = "rod";
+  RodRole role = RodRole::Coil;
   double length = 0;  // m
   int beams = 0;
   RestCurve rest;     // canonical or placed curve with beams+1 samples
@@ -55,6 +57,7 @@ struct BeamRest {
 
 struct RodModel {
   std::string name;
+  RodRole role = RodRole::Coil;
   int nnode = 0;
   Material material;
   Section section;
