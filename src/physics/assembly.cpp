@@ -8,8 +8,12 @@ double assembleRod(const Model& model, int rodIndex, RodState& rod, double time,
   const RodModel& rm = model.rods[rodIndex];
   RodWorkspace& w = rod.work;
   for (auto& f : w.force) f.setZero();
-  for (auto& k : w.effectK) k.setZero();
-  for (auto& d : w.effectD) d.setZero();
+  // Most effects only add forces: clear their matrices only if used last time.
+  if (w.effectsTouchedMatrix) {
+    for (auto& k : w.effectK) k.setZero();
+    for (auto& d : w.effectD) d.setZero();
+    w.effectsTouchedMatrix = false;
+  }
   if (withTangent) w.stiffness.setZero();
 
   double energy = 0;
@@ -29,7 +33,7 @@ double assembleRod(const Model& model, int rodIndex, RodState& rod, double time,
     w.force[l.node].head<3>() += loadFactor * l.force;
     w.force[l.node].tail<3>() += loadFactor * l.moment;
   }
-  RodForces out{w.force, w.effectK, w.effectD};
+  RodForces out{w.force, w.effectK, w.effectD, w.effectsTouchedMatrix};
   const EffectContext ctx{model, rm, rod, time, loadFactor};
   for (const EffectUse& u : model.effects)
     if (u.enabled) u.effect->apply(ctx, u.values, out);

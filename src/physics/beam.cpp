@@ -48,16 +48,36 @@ BeamRest makeBeamRest(const Vec3& xa, const Quat& qa, const Vec3& xb, const Quat
   r.nodeToElement = (qa.conjugate() * elementFrame).normalized();
   r.restRelative = (elementFrame.conjugate() * qb).normalized();
   r.stiffness = localBeamStiffness(r.length, material, section);
+  const Mat12& k = r.stiffness;
+  r.axial = Vec3(k(0, 0), k(1, 1), k(2, 2));
+  r.rotSelf = Vec3(k(3, 3), k(4, 4), k(5, 5));
+  r.rotCross = Vec3(k(3, 9), k(4, 10), k(5, 11));
+  r.shearY = k(1, 5);
+  r.shearZ = -k(2, 4);
   return r;
 }
 
 namespace {
-// Global 6x6 block from a local one: each 3x3 sub-block becomes R K R^T.
-inline void rotateBlock(const Mat3& R, const Mat12& k, int r0, int c0, Mat6& out) {
-  for (int bi = 0; bi < 2; ++bi)
-    for (int bj = 0; bj < 2; ++bj)
-      out.block<3, 3>(3 * bi, 3 * bj).noalias() = R * k.block<3, 3>(r0 + 3 * bi, c0 + 3 * bj) * R.transpose();
+
+// sum_k d_k e_k e_k^T for the columns e_k of R: R diag(d) R^T.
+inline Mat3 rotatedDiagonal(const Mat3& R, const Vec3& d) { return R * d.asDiagonal() * R.transpose(); }
+
+// Global tangent blocks T K T^T from the distinct entries of the local K.
+// With ey, ez the element's transverse axes, the bending-shear coupling of
+// node a's translation with its rotation is shearY ey ez^T - shearZ ez ey^T;
+// the signs of the other blocks follow Przemieniecki's matrix (beam.h).
+void globalTangent(const BeamRest& r, const Mat3& R, BeamEval& out) {
+  const Mat3 tt = rotatedDiagonal(R, r.axial);
+  const Mat3 rrSelf = rotatedDiagonal(R, r.rotSelf);
+  const Mat3 rrCross = rotatedDiagonal(R, r.rotCross);
+  const Mat3 yz = R.col(1) * R.col(2).transpose();
+  const Mat3 c = r.shearY * yz - r.shearZ * yz.transpose();  // K(a_t, a_r) rotated
+  out.kaa << tt, c, c.transpose(), rrSelf;
+  // K(b, a): translations of b against a: -tt; b_t against a_r: -c; b_r against a_t: c^T.
+  out.kba << -tt, -c, c.transpose(), rrCross;
+  out.kbb << tt, -c, -c.transpose(), rrSelf;
 }
+
 }  // namespace
 
 void evalBeam(const BeamRest& rest, const Vec3& xa, const Quat& qa, const Vec3& xb, const Quat& qb,
@@ -74,9 +94,7 @@ void evalBeam(const BeamRest& rest, const Vec3& xa, const Quat& qa, const Vec3& 
   out.forceB.head<3>() = -(R * f.segment<3>(6));
   out.forceB.tail<3>() = -(R * f.segment<3>(9));
   if (withTangent) {
-    rotateBlock(R, rest.stiffness, 0, 0, out.kaa);
-    rotateBlock(R, rest.stiffness, 6, 0, out.kba);
-    rotateBlock(R, rest.stiffness, 6, 6, out.kbb);
+    globalTangent(rest, R, out);
   }
 }
 

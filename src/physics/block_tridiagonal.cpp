@@ -9,62 +9,51 @@ namespace {
 inline double& at(Mat6& m, int r, int c) { return m.data()[c * 6 + r]; }
 inline double at(const Mat6& m, int r, int c) { return m.data()[c * 6 + r]; }
 
-// In-place lower Cholesky of an SPD 6x6 block; the strict upper part is left
-// as garbage and never read. Returns false on a non-positive pivot.
-bool cholesky6(Mat6& a) {
+// Inverse of the lower Cholesky factor of an SPD 6x6 block, computed in
+// place: `a` becomes C^{-1} (lower triangular, strict upper part zero).
+// Keeping the inverse turns every later triangular solve into a plain
+// fixed-size product, which vectorises; divisions happen 6 times per block.
+bool invertedCholesky6(Mat6& a) {
+  // Row-major scratch so that the inner products run over contiguous memory;
+  // every loop has a compile-time trip count once unrolled.
+  double c[6][6] = {};
+  double inv[6];
+#pragma GCC unroll 6
   for (int j = 0; j < 6; ++j) {
     double d = at(a, j, j);
-    for (int k = 0; k < j; ++k) d -= at(a, j, k) * at(a, j, k);
+#pragma GCC unroll 6
+    for (int k = 0; k < j; ++k) d -= c[j][k] * c[j][k];
     if (!(d > 0.0)) return false;
     const double ljj = std::sqrt(d);
-    at(a, j, j) = ljj;
-    const double inv = 1.0 / ljj;
+    c[j][j] = ljj;
+    inv[j] = 1.0 / ljj;
+#pragma GCC unroll 6
     for (int i = j + 1; i < 6; ++i) {
       double s = at(a, i, j);
-      for (int k = 0; k < j; ++k) s -= at(a, i, k) * at(a, j, k);
-      at(a, i, j) = s * inv;
+#pragma GCC unroll 6
+      for (int k = 0; k < j; ++k) s -= c[i][k] * c[j][k];
+      c[i][j] = s * inv[j];
     }
   }
+  // Forward substitution C X = I, row by row: X(i, :) = (e_i - C(i, 0:i) X(0:i, :)) / C(i, i).
+  double x[6][6] = {};
+#pragma GCC unroll 6
+  for (int i = 0; i < 6; ++i) {
+#pragma GCC unroll 6
+    for (int k = 0; k < i; ++k) {
+      const double cik = c[i][k];
+#pragma GCC unroll 6
+      for (int col = 0; col < 6; ++col) x[i][col] -= cik * x[k][col];
+    }
+    x[i][i] += 1.0;
+#pragma GCC unroll 6
+    for (int col = 0; col < 6; ++col) x[i][col] *= inv[i];
+  }
+#pragma GCC unroll 6
+  for (int r = 0; r < 6; ++r)
+#pragma GCC unroll 6
+    for (int col = 0; col < 6; ++col) at(a, r, col) = x[r][col];
   return true;
-}
-
-// out = C^{-1} B^T for lower-triangular C (forward substitution, 6 columns).
-void forwardTransposed(const Mat6& c, const Mat6& b, Mat6& out) {
-  for (int col = 0; col < 6; ++col) {
-    for (int i = 0; i < 6; ++i) {
-      double s = at(b, col, i);  // (B^T)(i, col)
-      for (int k = 0; k < i; ++k) s -= at(c, i, k) * at(out, k, col);
-      at(out, i, col) = s / at(c, i, i);
-    }
-  }
-}
-
-// a -= G^T G (symmetric update of the Schur complement).
-void subtractGramian(const Mat6& g, Mat6& a) {
-  for (int i = 0; i < 6; ++i) {
-    for (int j = 0; j <= i; ++j) {
-      double s = 0;
-      for (int k = 0; k < 6; ++k) s += at(g, k, i) * at(g, k, j);
-      at(a, i, j) -= s;
-      if (i != j) at(a, j, i) -= s;
-    }
-  }
-}
-
-void forwardSolve(const Mat6& c, Vec6& x) {
-  for (int i = 0; i < 6; ++i) {
-    double s = x[i];
-    for (int k = 0; k < i; ++k) s -= at(c, i, k) * x[k];
-    x[i] = s / at(c, i, i);
-  }
-}
-
-void backwardSolveTransposed(const Mat6& c, Vec6& x) {
-  for (int i = 5; i >= 0; --i) {
-    double s = x[i];
-    for (int k = i + 1; k < 6; ++k) s -= at(c, k, i) * x[k];
-    x[i] = s / at(c, i, i);
-  }
 }
 
 }  // namespace
@@ -88,25 +77,29 @@ bool BlockTridiagonalSolver::factorize(const BlockTridiagonal& a) {
   const int n = a.size();
   if (int(chol_.size()) != n) resize(n);
   for (int i = 0; i < n; ++i) {
-    chol_[i] = a.diag[i];
+    Mat6& s = chol_[i];
+    s = a.diag[i];
     if (i > 0) {
-      forwardTransposed(chol_[i - 1], a.lower[i - 1], gain_[i]);
-      subtractGramian(gain_[i], chol_[i]);
+      gain_[i].noalias() = chol_[i - 1] * a.lower[i - 1].transpose();  // C_{i-1}^{-1} A(i, i-1)^T
+      s.noalias() -= gain_[i].transpose() * gain_[i];                  // Schur complement
     }
-    if (!cholesky6(chol_[i])) return false;
+    if (!invertedCholesky6(s)) return false;
   }
   return true;
 }
 
 void BlockTridiagonalSolver::solve(std::vector<Vec6>& b) const {
   const int n = int(chol_.size());
+  Vec6 t;
   for (int i = 0; i < n; ++i) {
     if (i > 0) b[i].noalias() -= gain_[i].transpose() * b[i - 1];
-    forwardSolve(chol_[i], b[i]);
+    t.noalias() = chol_[i] * b[i];
+    b[i] = t;
   }
   for (int i = n - 1; i >= 0; --i) {
     if (i + 1 < n) b[i].noalias() -= gain_[i + 1] * b[i + 1];
-    backwardSolveTransposed(chol_[i], b[i]);
+    t.noalias() = chol_[i].transpose() * b[i];
+    b[i] = t;
   }
 }
 

@@ -27,7 +27,7 @@ class BlockTridiagonalSolver {
   void solve(std::vector<Vec6>& b) const;
 
  private:
-  std::vector<Mat6> chol_;  // (n) lower Cholesky factors C_i of the Schur complements
+  std::vector<Mat6> chol_;  // (n) inverses C_i^{-1} of the lower Cholesky factors of the Schur complements
   std::vector<Mat6> gain_;  // (n) G_i = C_{i-1}^{-1} A(i, i-1)^T, G_0 unused
 };
 

@@ -51,32 +51,39 @@ StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, l
     assembleRod(model, rodIndex, r, time + h, 1.0, true);
     BlockTridiagonal& A = w.system;
     const BlockTridiagonal& K = w.stiffness;
+    const double kScale = h * b + h * h;           // stiffness in the matrix
+    const double kRhs = b + (it == 0 ? h : 0.0);    // stiffness times velocity in the right-hand side
     for (int i = 0; i < n; ++i) {
-      Mat6 mass = Mat6::Zero();
-      mass.topLeftCorner<3, 3>().diagonal().setConstant(rm.nodeMass[i]);
-      mass.bottomRightCorner<3, 3>() = nodeInertiaGlobal(rm, w.q0[i], i);
-      Vec6 vel;
+      Vec6& vel = w.velocity[i];
       vel << r.v[i], r.w[i];
-      w.velocity[i] = vel;
-      const Mat6 kTotal = K.diag[i] + w.effectK[i];
-      A.diag[i] = (1 + h * a) * mass + h * w.effectD[i] + (h * b + h * h) * K.diag[i] + h * h * w.effectK[i];
-      // Damping force of the diagonal part; the off-diagonal stiffness part is added below.
-      Vec6 rhs = w.force[i] - (a * mass + b * K.diag[i] + w.effectD[i]) * vel;
-      if (it == 0) {
-        rhs -= h * kTotal * vel;  // Baraff-Witkin: forces at x0 + h v1, linearised
-      } else {
-        Vec6 v0;
-        v0 << w.v0[i], w.w0[i];
-        rhs -= mass * (vel - v0) / h;
+      const double m = rm.nodeMass[i];
+      const Mat3 inertia = nodeInertiaGlobal(rm, w.q0[i], i);
+      // Mass and Rayleigh mass damping act on translation and rotation separately.
+      Vec6 massTimes;  // M (a vel) and, from the second iteration, M (vel - v0) / h
+      massTimes.head<3>() = a * m * r.v[i];
+      massTimes.tail<3>() = a * (inertia * r.w[i]);
+      if (it > 0) {
+        massTimes.head<3>() += m * (r.v[i] - w.v0[i]) / h;
+        massTimes.tail<3>() += inertia * (r.w[i] - w.w0[i]) / h;
+      }
+      Mat6& Ad = A.diag[i];
+      Ad.noalias() = kScale * K.diag[i];
+      Ad.topLeftCorner<3, 3>().diagonal().array() += (1 + h * a) * m;
+      Ad.bottomRightCorner<3, 3>() += (1 + h * a) * inertia;
+      Vec6 rhs = w.force[i] - massTimes;
+      rhs.noalias() -= kRhs * (K.diag[i] * vel);
+      if (w.effectsTouchedMatrix) {
+        Ad += h * w.effectD[i] + h * h * w.effectK[i];
+        rhs.noalias() -= w.effectD[i] * vel;
+        if (it == 0) rhs.noalias() -= h * (w.effectK[i] * vel);
       }
       w.rhs[i] = h * rhs;
     }
     for (int e = 0; e + 1 < n; ++e) {
-      A.lower[e] = (h * b + h * h) * K.lower[e];
+      A.lower[e].noalias() = kScale * K.lower[e];
       // Off-diagonal coupling: K(e+1,e) v_e acts on e+1, K(e,e+1) v_{e+1} on e.
-      const double c = h * (b + (it == 0 ? h : 0.0));
-      w.rhs[e + 1] -= c * K.lower[e] * w.velocity[e];
-      w.rhs[e] -= c * K.lower[e].transpose() * w.velocity[e + 1];
+      w.rhs[e + 1].noalias() -= (h * kRhs) * (K.lower[e] * w.velocity[e]);
+      w.rhs[e].noalias() -= (h * kRhs) * (K.lower[e].transpose() * w.velocity[e + 1]);
     }
     for (int i = 0; i < n; ++i) {
       const unsigned m = w.fixedMask[i];

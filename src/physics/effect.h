@@ -32,6 +32,7 @@ struct RodForces {
   std::vector<Vec6>& force;      // force (N, rows 0-2) and moment (N m, rows 3-5), global
   std::vector<Mat6>& stiffness;  // -d force / d (position, rotation), added to the implicit matrix
   std::vector<Mat6>& damping;    // -d force / d (velocity, angular velocity)
+  bool& touchedMatrix;           // set true when writing stiffness or damping
 };
 
 class Effect {

@@ -53,6 +53,13 @@ struct BeamRest {
   Quat nodeToElement;              // Q: rest element frame expressed in node a's frame
   Quat restRelative;               // P: node b's rest frame in the rest element frame
   Mat12 stiffness;                 // local 12x12 stiffness (Przemieniecki, Timoshenko)
+  // The few distinct entries of `stiffness` (its 3x3 blocks are diagonal or
+  // hold two off-diagonal terms), so the global tangent is a handful of
+  // outer products instead of twelve 3x3 triple products.
+  Vec3 axial;      // K(0,0), K(1,1), K(2,2): translational diagonal
+  Vec3 rotSelf;    // K(3,3), K(4,4), K(5,5): rotational diagonal
+  Vec3 rotCross;   // K(3,9), K(4,10), K(5,11): rotational coupling a-b
+  double shearY = 0, shearZ = 0;  // K(1,5) and -K(2,4): bending-shear coupling
 };
 
 struct RodModel {

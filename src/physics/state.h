@@ -22,6 +22,7 @@ struct RodWorkspace {
   std::vector<Vec6> force;       // (nnode) total generalised force
   std::vector<Mat6> effectK;     // (nnode) effect stiffness diagonal blocks
   std::vector<Mat6> effectD;     // (nnode) effect damping diagonal blocks
+  bool effectsTouchedMatrix = false;  // some effect wrote effectK/effectD this assembly
   BlockTridiagonal stiffness;    // elastic tangent K (nnode blocks)
   BlockTridiagonal system;       // implicit matrix
   BlockTridiagonalSolver solver;

@@ -29,7 +29,8 @@ NewtonResult newton(const Model& model, int k, RodState& r, double lambda, const
     assembleRod(model, k, r, 0.0, lambda, true);
     BlockTridiagonal& A = w.system;
     for (int i = 0; i < rm.nnode; ++i) {
-      A.diag[i] = w.stiffness.diag[i] + w.effectK[i];
+      A.diag[i] = w.stiffness.diag[i];
+      if (w.effectsTouchedMatrix) A.diag[i] += w.effectK[i];
       w.rhs[i] = w.force[i];
     }
     for (int e = 0; e + 1 < rm.nnode; ++e) A.lower[e] = w.stiffness.lower[e];

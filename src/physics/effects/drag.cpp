@@ -34,6 +34,7 @@ class Drag final : public Effect {
       const Mat3 d = c.rod.nodeLength[i] * (cn * (Mat3::Identity() - tt) + ct * tt);
       out.force[i].head<3>() -= d * c.state.v[i];
       out.damping[i].topLeftCorner<3, 3>() += d;
+      out.touchedMatrix = true;
     }
   }
 };
