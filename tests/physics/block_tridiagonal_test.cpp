@@ -159,7 +159,7 @@ ImplicitSystem helixImplicitSystem(double h, double alpha, double beta) {
   for (int i = 0; i <= beams; ++i) {
     Mat6 mass = Mat6::Zero();
     mass.topLeftCorner<3, 3>() = rm.nodeMass[i] * Mat3::Identity();
-    mass.bottomRightCorner<3, 3>() = nodeInertiaGlobal(rm, s.rods[0].q[i], i);
+    mass.bottomRightCorner<3, 3>() = globalInertia(rm, s.rods[0].q[i], i);
     sys.a.diag[i] = (1 + h * alpha) * mass + (h * beta + h * h) * sys.a.diag[i];
     if (i < beams) sys.a.lower[i] *= (h * beta + h * h);
   }

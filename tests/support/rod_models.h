@@ -92,6 +92,13 @@ inline double assembleAt(const Model& model, State& state, int k = 0) {
   return assembleRod(model, k, state.rods[k], state.time, 1.0, true);
 }
 
+// Rotational inertia of node i about global axes, R diag(I) R^T, from the
+// model's lumped material-frame inertia (computed here, not by the core).
+inline Mat3 globalInertia(const RodModel& rod, const Quat& q, int node) {
+  const Mat3 r = q.toRotationMatrix();
+  return r * rod.nodeInertia[node].asDiagonal() * r.transpose();
+}
+
 // Elastic energy of all rods (J), independent of any effect.
 inline double elasticEnergy(const Model& model, const State& state) { return computeEnergy(model, state).elastic; }
 
