@@ -19,4 +19,13 @@ inline constexpr double kgm3ToGcm3(double k) { return k / kKgM3PerGCm3; }
 inline constexpr double degToRad(double d) { return d * kRadPerDeg; }
 inline constexpr double radToDeg(double r) { return r / kRadPerDeg; }
 
+// Derived edge units of scene files: areas, second moments, moments, rates.
+inline constexpr double mm2ToM2(double mm2) { return mm2 * kMetresPerMm * kMetresPerMm; }
+inline constexpr double mm4ToM4(double mm4) { return mm2ToM2(mm2ToM2(mm4)); }
+inline constexpr double nmmToNm(double nmm) { return nmm * kMetresPerMm; }
+inline constexpr double nmToNmm(double nm) { return nm / kMetresPerMm; }
+inline constexpr double mmPerSToMPerS(double v) { return v * kMetresPerMm; }
+inline constexpr double degPerSToRadPerS(double w) { return w * kRadPerDeg; }
+inline constexpr double degPerMmToRadPerM(double t) { return t * kRadPerDeg / kMetresPerMm; }
+
 }  // namespace coilsim::units
