@@ -1,0 +1,214 @@
+// Scene file -> SceneSpec: types, required keys, unknown keys and per-field
+// ranges. Values stay in the file's units; compileScene converts them.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "io/scene.h"
+
+namespace coilsim::io {
+namespace {
+
+Vec3 toVec3(const std::array<double, 3>& a) { return Vec3(a[0], a[1], a[2]); }
+
+// Bounds of each field, declared once here and quoted in error messages.
+const Bounds kPositive = Bounds::positive();
+const Bounds kNonNegative = Bounds::nonNegative();
+const Bounds kAny = Bounds::any();
+
+NodeRef readNode(const JsonNode& n) {
+  constexpr const char* what = "a node index (an integer >= 0) or \"last\"";
+  if (n.exists() && n.value().is_string()) {
+    if (n.value().get<std::string>() != "last") n.expected(what);
+    return {true, 0};
+  }
+  if (!n.exists() || !n.value().is_number()) n.expected(what);
+  return {false, n.integer(0, 10'000'000)};
+}
+
+RestShapeSpec readRestShape(const JsonNode& n) {
+  RestShapeSpec r;
+  if (!n.isObject()) n.expected("an object with a \"type\"");
+  const std::string type = n.child("type").oneOf({"straight", "helix", "polyline", "birdcage"});
+  if (type == "straight") {
+    n.allowKeys({"type"});
+    r.type = RestShapeSpec::Type::Straight;
+  } else if (type == "helix") {
+    n.allowKeys({"type", "loop_diameter_mm", "pitch_mm", "handedness"});
+    r.type = RestShapeSpec::Type::Helix;
+    r.loopDiameterMm = n.child("loop_diameter_mm").number(kPositive);
+    r.pitchMm = n.child("pitch_mm").number(kNonNegative);
+    r.rightHanded = n.child("handedness").oneOf({"right", "left"}) == "right";
+  } else if (type == "polyline") {
+    n.allowKeys({"type", "points_mm", "frames", "twist_deg_per_mm"});
+    r.type = RestShapeSpec::Type::Polyline;
+    for (const JsonNode& p : n.child("points_mm").items(2, SIZE_MAX, "an array of at least 2 points [x, y, z]"))
+      r.pointsMm.push_back(toVec3(p.vec3(kAny)));
+    if (auto f = n.optional("frames"))
+      r.frames = f->oneOf({"frenet", "parallel_transport"}) == "frenet" ? FrameRule::Frenet
+                                                                         : FrameRule::ParallelTransport;
+    if (auto t = n.optional("twist_deg_per_mm")) r.twistDegPerMm = t->number(kAny);
+  } else {
+    n.allowKeys({"type", "sphere_diameter_mm", "plane_turn_per_loop_deg"});
+    r.type = RestShapeSpec::Type::Birdcage;
+    r.sphereDiameterMm = n.child("sphere_diameter_mm").number(kPositive);
+    r.planeTurnPerLoopDeg = n.child("plane_turn_per_loop_deg").number(Bounds::closed(-180, 180, "deg"));
+  }
+  return r;
+}
+
+MaterialSpec readMaterial(const JsonNode& n) {
+  n.allowKeys({"young_modulus_gpa", "poisson_ratio", "density_g_cm3"});
+  MaterialSpec m;
+  m.youngModulusGpa = n.child("young_modulus_gpa").number(kPositive);
+  // Isotropic stability: -1 < nu <= 0.5.
+  m.poissonRatio = n.child("poisson_ratio").number({-1.0, 0.5, true, false, {}});
+  m.densityGcm3 = n.child("density_g_cm3").number(kPositive);
+  return m;
+}
+
+SectionSpec readSection(const JsonNode& n) {
+  SectionSpec s;
+  if (!n.isObject()) n.expected("an object: {\"wire_radius_mm\"} or explicit section constants");
+  if (n.has("wire_radius_mm")) {
+    n.allowKeys({"wire_radius_mm"});
+    s.circular = true;
+    s.wireRadiusMm = n.child("wire_radius_mm").number(kPositive);
+    return s;
+  }
+  n.allowKeys({"wire_radius_mm", "area_mm2", "inertia_mm4", "torsion_mm4", "shear_factor", "outer_radius_mm"});
+  if (n.keys().empty())
+    n.fail("expected {\"wire_radius_mm\"} (solid circular wire) or {\"area_mm2\", \"inertia_mm4\", "
+           "\"torsion_mm4\", \"shear_factor\", \"outer_radius_mm\"}");
+  s.circular = false;
+  s.areaMm2 = n.child("area_mm2").number(kPositive);
+  s.inertiaMm4 = n.child("inertia_mm4").number(kPositive);
+  s.torsionMm4 = n.child("torsion_mm4").number(kPositive);
+  s.shearFactor = n.child("shear_factor").number(kNonNegative);
+  s.outerRadiusMm = n.child("outer_radius_mm").number(kPositive);
+  return s;
+}
+
+PlacementSpec readPlacement(const JsonNode& n) {
+  n.allowKeys({"position_mm", "direction", "normal"});
+  PlacementSpec p;
+  p.positionMm = toVec3(n.child("position_mm").vec3(kAny));
+  p.direction = toVec3(n.child("direction").vec3(kAny));
+  p.normal = toVec3(n.child("normal").vec3(kAny));
+  return p;
+}
+
+BoundarySpec readBoundary(const JsonNode& n) {
+  n.allowKeys({"node", "type", "velocity_mm_s", "angular_velocity_deg_s"});
+  BoundarySpec b;
+  b.node = readNode(n.child("node"));
+  b.clamped = n.child("type").oneOf({"clamped", "pinned"}) == "clamped";
+  if (auto v = n.optional("velocity_mm_s")) b.velocityMmS = toVec3(v->vec3(kAny));
+  if (auto w = n.optional("angular_velocity_deg_s")) b.angularVelocityDegS = toVec3(w->vec3(kAny));
+  return b;
+}
+
+LoadSpec readLoad(const JsonNode& n) {
+  n.allowKeys({"node", "force_N", "moment_N_mm"});
+  LoadSpec l;
+  l.node = readNode(n.child("node"));
+  if (!n.has("force_N") && !n.has("moment_N_mm")) n.fail("a load needs \"force_N\", \"moment_N_mm\" or both");
+  if (auto f = n.optional("force_N")) l.forceN = toVec3(f->vec3(kAny));
+  if (auto m = n.optional("moment_N_mm")) l.momentNmm = toVec3(m->vec3(kAny));
+  return l;
+}
+
+RodSpec readRod(const JsonNode& n) {
+  n.allowKeys({"name", "role", "length_mm", "beams", "rest_shape", "material", "section", "placement", "boundary",
+               "loads"});
+  RodSpec r;
+  r.name = n.child("name").string();
+  if (auto role = n.optional("role")) {
+    const std::string s = role->oneOf({"coil", "catheter", "wire"});
+    r.role = s == "coil" ? RodRole::Coil : s == "catheter" ? RodRole::Catheter : RodRole::Wire;
+  }
+  r.lengthMm = n.child("length_mm").number(kPositive);
+  r.beams = int(n.child("beams").integer(1, 100'000));
+  r.rest = readRestShape(n.child("rest_shape"));
+  r.material = readMaterial(n.child("material"));
+  r.section = readSection(n.child("section"));
+  if (auto p = n.optional("placement")) r.placement = readPlacement(*p);
+  if (auto b = n.optional("boundary"))
+    for (const JsonNode& item : b->items(0, SIZE_MAX, "an array of boundary conditions"))
+      r.boundary.push_back(readBoundary(item));
+  if (auto l = n.optional("loads"))
+    for (const JsonNode& item : l->items(0, SIZE_MAX, "an array of loads")) r.loads.push_back(readLoad(item));
+  return r;
+}
+
+// Parameter keys, bounds and defaults come from each Effect's ParamSpecs.
+EffectSpec readEffect(const JsonNode& n, const std::string& name) {
+  const Effect* effect = EffectRegistry::global().find(name);
+  if (!effect) {
+    std::string known;
+    for (const Effect* e : EffectRegistry::global().all()) known += (known.empty() ? "" : ", ") + std::string(e->name());
+    n.fail("unknown effect; registered effects: " + known);
+  }
+  std::vector<std::string_view> allowed{"enabled"};
+  for (const ParamSpec& p : effect->params()) allowed.push_back(p.name);
+  n.allowKeys(allowed);
+  EffectSpec e;
+  e.name = name;
+  if (auto en = n.optional("enabled")) e.enabled = en->boolean();
+  for (const ParamSpec& p : effect->params()) {
+    const auto v = n.optional(p.name);
+    e.values.push_back(v ? v->number(Bounds::closed(p.min, p.max, p.unit)) : p.defaultValue);
+  }
+  return e;
+}
+
+std::string fileStem(const std::string& file) { return std::filesystem::path(file).stem().string(); }
+
+}  // namespace
+
+SceneSpec parseScene(const nlohmann::json& document, const std::string& file) {
+  const JsonNode root(document, file);
+  if (!root.isObject()) root.expected("a JSON object (a coilsim scene)");
+  root.allowKeys({"format", "name", "description", "gravity_m_s2", "solve", "time_step_s", "duration_s",
+                  "newton_iterations", "damping", "load_steps", "max_newton_iterations", "effects", "rods"});
+  root.child("format").oneOf({kSceneFormat});
+  SceneSpec s;
+  s.file = file;
+  s.name = root.has("name") ? root.child("name").string() : fileStem(file);
+  if (auto d = root.optional("description")) s.description = d->string(true);
+  s.gravityMS2 = toVec3(root.child("gravity_m_s2").vec3(kAny));
+  s.solve = root.child("solve").oneOf({"dynamic", "static"}) == "dynamic" ? SolveMode::Dynamic : SolveMode::Static;
+  const bool dynamic = s.solve == SolveMode::Dynamic;
+
+  // Keys of the other solve mode are still checked, and reported as unused.
+  const auto unused = [&](const char* key) {
+    if (root.has(key))
+      s.warnings.push_back(root.child(key).where() + ": not used by a " + (dynamic ? "dynamic" : "static") + " solve");
+  };
+  if (dynamic || root.has("time_step_s")) s.timeStepS = root.child("time_step_s").number({0, 1, true, false, "s"});
+  if (dynamic || root.has("duration_s")) s.durationS = root.child("duration_s").number(kPositive);
+  if (auto it = root.optional("newton_iterations")) s.newtonIterations = int(it->integer(1, 100));
+  if (auto d = root.optional("damping")) {
+    d->allowKeys({"rayleigh_mass_1_s", "rayleigh_stiffness_s"});
+    if (auto a = d->optional("rayleigh_mass_1_s")) s.rayleighMass = a->number(kNonNegative);
+    if (auto b = d->optional("rayleigh_stiffness_s")) s.rayleighStiffness = b->number(kNonNegative);
+  }
+  if (auto l = root.optional("load_steps")) s.loadSteps = int(l->integer(1, 100'000));
+  if (auto m = root.optional("max_newton_iterations")) s.maxNewtonIterations = int(m->integer(1, 10'000));
+  if (dynamic) {
+    unused("load_steps");
+    unused("max_newton_iterations");
+  } else {
+    for (const char* key : {"time_step_s", "duration_s", "newton_iterations", "damping"}) unused(key);
+  }
+
+  if (auto effects = root.optional("effects")) {
+    if (!effects->isObject()) effects->expected("an object {\"effect name\": {parameters}}");
+    for (const std::string& name : effects->keys()) s.effects.push_back(readEffect(effects->child(name), name));
+  }
+  for (const JsonNode& rod : root.child("rods").items(1, SIZE_MAX, "an array of at least one rod"))
+    s.rods.push_back(readRod(rod));
+  return s;
+}
+
+}  // namespace coilsim::io
