@@ -1,0 +1,38 @@
+#pragma once
+// Result files ("coilsim-result/1", docs/scene-format.md): the final state
+// of a run in millimetres, so anyone can check a result without reading C++.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "io/scene.h"
+#include "physics/integrator.h"
+#include "physics/model.h"
+#include "physics/state.h"
+
+namespace coilsim::io {
+
+inline constexpr const char* kResultFormat = "coilsim-result/1";
+
+// How a run went, besides the state itself.
+struct RunRecord {
+  std::string scene;       // scene file as given on the command line
+  std::string sceneName;
+  SolveMode solve = SolveMode::Dynamic;
+  std::string status = "ok";  // "ok", "step_refused" or "not_converged"
+  std::string error;          // why, when status is not "ok"
+  std::optional<StaticReport> statics;  // static solves only
+  std::vector<std::string> warnings;    // scene warnings; the state's are added
+};
+
+// The result document: format, scene, status, time_s, steps, rods (nodes_mm,
+// rotations w x y z), energy (J), stats, static (when static), warnings.
+nlohmann::ordered_json resultJson(const Model& model, const State& state, const RunRecord& run);
+
+// resultJson, formatted, written atomically to `path`. Throws
+// std::runtime_error naming the path on failure.
+void writeResult(const std::string& path, const Model& model, const State& state, const RunRecord& run);
+
+}  // namespace coilsim::io
