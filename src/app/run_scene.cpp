@@ -1,0 +1,237 @@
+#include "app/run_scene.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <string>
+
+#include "io/result.h"
+#include "io/scene.h"
+#include "io/units.h"
+#include "physics/integrator.h"
+#include "physics/model.h"
+#include "physics/state.h"
+
+#ifdef COILSIM_HAVE_UI
+#include "ui/viewer.h"
+#endif
+
+namespace coilsim::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+int usageError(const std::string& message) {
+  std::fprintf(stderr, "coilsim: %s\n", message.c_str());
+  return kExitUsage;
+}
+
+std::string fmt(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+// "(x, y, z) mm" of a point given in metres.
+std::string mm(const Vec3& x) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g) mm", units::mToMm(x.x()), units::mToMm(x.y()),
+                units::mToMm(x.z()));
+  return buf;
+}
+
+std::string tips(const Model& model, const State& state) {
+  std::string s;
+  for (size_t k = 0; k < model.rods.size() && k < 3; ++k)
+    s += std::string(k ? ", " : "; ") + "last node of \"" + model.rods[k].name + "\" at " + mm(state.rods[k].x.back());
+  if (model.rods.size() > 3) s += ", ...";
+  return s;
+}
+
+// Percent done on stderr, at most once a second, only once a run has taken a second.
+class Progress {
+ public:
+  explicit Progress(long total) : total_(total), start_(Clock::now()), last_(start_) {}
+  void update(long done, double timeS) {
+    if ((done & 63) != 0) return;  // look at the clock only every 64 steps
+    const auto now = Clock::now();
+    if (now - last_ < std::chrono::seconds(1)) return;
+    last_ = now;
+    std::fprintf(stderr, "coilsim: %3.0f%% (t = %.4g s, step %ld of %ld)\n", 100.0 * double(done) / double(total_), timeS,
+                 done, total_);
+  }
+  double seconds() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+
+ private:
+  long total_;
+  Clock::time_point start_, last_;
+};
+
+struct Outcome {
+  bool ok = true;
+  std::string summary;  // one line, without the scene name
+};
+
+Outcome simulateDynamic(const Model& model, State& state, long steps, io::RunRecord& record) {
+  Progress progress(steps);
+  StepReport report;
+  long done = 0;
+  for (; done < steps; ++done) {
+    report = step(model, state);
+    if (!report.ok()) break;
+    progress.update(done + 1, state.time);
+  }
+  const StepStats& st = state.stats;
+  const double meanUs = st.steps ? 1e6 * st.totalStepSeconds / double(st.steps) : 0.0;
+  const Energy e = computeEnergy(model, state);
+  std::string line = "dynamic, " + std::to_string(done) + " of " + std::to_string(steps) + " steps of " +
+                     fmt("%.4g", model.timeStep * 1e3) + " ms to t = " + fmt("%.6g", state.time) + " s in " +
+                     fmt("%.3g", progress.seconds()) + " s (step mean " + fmt("%.3g", meanUs) + " us, max " +
+                     fmt("%.3g", 1e6 * st.maxStepSeconds) + " us); energy " + fmt("%.4g", e.total()) +
+                     " J (kinetic " + fmt("%.3g", e.kinetic) + " J)" + tips(model, state);
+  if (report.ok()) return {true, line};
+  record.status = "step_refused";
+  record.error = "step " + std::to_string(done + 1) + " refused at t = " + fmt("%.6g", state.time) +
+                 " s: " + report.message;
+  return {false, line};
+}
+
+Outcome simulateStatic(const Model& model, State& state, const io::SceneSpec& spec, io::RunRecord& record) {
+  const auto start = Clock::now();
+  const StaticReport rep = solveStatic(model, state, io::staticOptions(spec));
+  record.statics = rep;
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  const Energy e = computeEnergy(model, state);
+  const std::string line = std::string("static, ") + (rep.converged ? "converged" : "NOT converged") + " after " +
+                           std::to_string(rep.increments) + " load increments and " + std::to_string(rep.iterations) +
+                           " Newton iterations in " + fmt("%.3g", seconds) + " s; elastic energy " +
+                           fmt("%.4g", e.elastic) + " J" + tips(model, state);
+  if (rep.converged) return {true, line};
+  record.status = "not_converged";
+  record.error = "static solve did not converge: " + rep.message;
+  return {false, line};
+}
+
+// Writes --out; false (after saying why) if it cannot.
+bool writeOut(const RunOptions& o, const Model& model, const State& state, const io::RunRecord& record) {
+  if (o.out.empty()) return true;
+  try {
+    io::writeResult(o.out, model, state, record);
+    return true;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "coilsim: cannot write the result: %s\n", e.what());
+    return false;
+  }
+}
+
+#ifdef COILSIM_HAVE_UI
+ui::ViewerOptions viewerOptions(const RunOptions& o) {
+  ui::ViewerOptions v;
+  v.scenePath = o.scene;
+  if (o.view) v.view = *o.view;
+  if (o.width) v.width = *o.width;
+  if (o.height) v.height = *o.height;
+  v.screenshotPath = o.screenshot;
+  return v;
+}
+#endif
+
+int run(const RunOptions& o) {
+  const io::SceneSpec spec = io::loadScene(o.scene);  // throws InputError
+  if (spec.solve == io::SolveMode::Static && (o.durationS || o.steps))
+    return usageError(o.scene + ": --duration and --steps apply to dynamic scenes; this scene has \"solve\": \"static\"");
+  Model model;
+  try {
+    model = compileModel(io::compileScene(spec));
+  } catch (const io::InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    return usageError(o.scene + ": " + e.what());
+  }
+  State state = makeState(model);
+  io::RunRecord record;
+  record.scene = o.scene;
+  record.sceneName = spec.name;
+  record.solve = spec.solve;
+  record.warnings = spec.warnings;
+  for (const std::string& w : spec.warnings) std::fprintf(stderr, "coilsim: warning: %s\n", w.c_str());
+
+  const bool window = !o.headless && haveDisplay();
+  if (window) {
+#ifdef COILSIM_HAVE_UI
+    if (spec.solve == io::SolveMode::Static) {
+      Outcome r = simulateStatic(model, state, spec, record);
+      std::printf("%s: %s\n", o.scene.c_str(), r.summary.c_str());
+      if (!r.ok) std::fprintf(stderr, "coilsim: %s: %s\n", o.scene.c_str(), record.error.c_str());
+    }
+    ui::ViewerOptions v = viewerOptions(o);
+    v.screenshotPath.clear();
+    v.windowScreenshotPath = o.screenshot;
+    if (o.steps) v.runSeconds = double(*o.steps) * model.timeStep;
+    if (o.durationS) v.runSeconds = *o.durationS;
+    const int code = ui::runWindow(model, state, v);
+    return writeOut(o, model, state, record) ? code : kExitUsage;
+#else
+    return usageError("this coilsim was built without the ui layer, so it cannot open a window; run with --headless "
+                      "(or build with the graphics packages, see scripts/bootstrap)");
+#endif
+  }
+
+  if (!o.headless) std::fprintf(stderr, "coilsim: no display (DISPLAY and WAYLAND_DISPLAY unset): running off-screen\n");
+  Outcome r;
+  if (spec.solve == io::SolveMode::Static) {
+    r = simulateStatic(model, state, spec, record);
+  } else {
+    const long steps = o.steps ? *o.steps : io::stepCount(o.durationS ? *o.durationS : spec.durationS, model.timeStep);
+    r = simulateDynamic(model, state, steps, record);
+  }
+  std::printf("%s: %s\n", o.scene.c_str(), r.summary.c_str());
+  std::fflush(stdout);
+  if (!r.ok) std::fprintf(stderr, "coilsim: %s: %s\n", o.scene.c_str(), record.error.c_str());
+  if (!writeOut(o, model, state, record)) return kExitUsage;
+  if (!o.screenshot.empty()) {
+#ifdef COILSIM_HAVE_UI
+    std::string error;
+    if (!ui::renderOffscreen(model, state, viewerOptions(o), error)) {
+      std::fprintf(stderr, "coilsim: screenshot %s failed: %s\n", o.screenshot.c_str(), error.c_str());
+      return kExitFailure;
+    }
+#endif
+  }
+  return r.ok ? kExitOk : kExitFailure;
+}
+
+}  // namespace
+
+bool haveUi() {
+#ifdef COILSIM_HAVE_UI
+  return true;
+#else
+  return false;
+#endif
+}
+
+bool haveDisplay() {
+  for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY"})
+    if (const char* v = std::getenv(name); v && *v) return true;
+  return false;
+}
+
+int runScene(const RunOptions& o) {
+  // Asked for pictures from a binary that cannot make any: say so before simulating.
+  if (!haveUi() && !o.screenshot.empty())
+    return usageError("this coilsim was built without the ui layer: --screenshot is not available");
+  if (!haveUi() && (o.view || o.width))
+    return usageError("this coilsim was built without the ui layer: --view and --size have nothing to draw");
+  try {
+    return run(o);
+  } catch (const io::InputError& e) {
+    return usageError(e.what());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "coilsim: %s: internal error: %s\n", o.scene.c_str(), e.what());
+    return kExitFailure;
+  }
+}
+
+}  // namespace coilsim::app
