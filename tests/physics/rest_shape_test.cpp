@@ -118,9 +118,16 @@ TEST(RestShapeTest, BirdcagePointsLieOnTheSphereOfTheGivenDiameter) {
   const Tolerance sagitta{2.5e-4, "chords of the 200-per-loop sampling sag 1.2e-4 of the radius"};
   EXPECT_TRUE(nearRel("bird-cage sphere diameter", 2 * s.radius, diameter, sagitta));
   EXPECT_TRUE(small("bird-cage distance to the sphere / radius", worst / s.radius, sagitta));
-  // Nodes sit on chords of the curve: their polygon is shorter than the arc by
-  // (kappa ds)^2 / 24 ~ 1e-4 of the length at ds = 0.5 mm, kappa ~ 1/3.9 mm.
-  EXPECT_TRUE(nearRel("bird-cage node polygon length", arc, length, {3e-4, "chord vs arc: (kappa ds)^2 / 24"}));
+  // Nodes are equally spaced along the curve (arc ds = L / n): the chords
+  // are shorter than ds by kappa^2 ds^3 / 24, kappa read off the nodes
+  // themselves (circle through three neighbours).
+  const double ds = length / beams;
+  double kappa2 = 0;
+  for (int i = 1; i < beams; ++i) kappa2 += std::pow(1 / circumradius(c.points[i - 1], c.points[i], c.points[i + 1]), 2);
+  kappa2 /= beams - 1;
+  EXPECT_TRUE(nearRel("bird-cage node polygon length vs L (1 - kappa^2 ds^2 / 24)", arc,
+                      length * (1 - kappa2 * ds * ds / 24),
+                      {1e-4, "generator sampled with 200 chords per loop: (2 pi / 200)^2 / 24 = 4e-5"}));
 }
 
 // A three-quarter circle of radius 5 mm sampled by 3000 points.
