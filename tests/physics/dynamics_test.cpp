@@ -301,7 +301,6 @@ TEST(DynamicsTest, StatesSharingAModelAreIndependentAndDeterministic) {
   }
   ASSERT_TRUE(run(m, c, 100));
   EXPECT_TRUE(sameBits(a, c)) << "the same start gives different bits when another State is stepped in between";
-  EXPECT_TRUE(sameBits(b, makeState(m)) || b.time > 0);
   double drift = 0;
   for (int i = 0; i <= kHelixBeams; ++i) drift = std::max(drift, (b.rods[0].x[i] - m.rods[0].restPoints[i]).norm());
   EXPECT_TRUE(small("untouched State stays at rest / D", drift / kLoopDiameter,
