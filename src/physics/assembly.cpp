@@ -18,8 +18,8 @@ double assembleRod(const Model& model, int rodIndex, RodState& rod, double time,
 
   double energy = 0;
   BeamEval ev;
-  for (int e = 0; e < rm.nbeam(); ++e) {
-    evalBeam(rm.beams[e], rod.x[e], rod.q[e], rod.x[e + 1], rod.q[e + 1], withTangent, ev);
+  for (int e = 0; e + 1 < rod.activeNodes; ++e) {
+    evalBeam(rod.beams[e], rod.x[e], rod.q[e], rod.x[e + 1], rod.q[e + 1], withTangent, ev);
     w.force[e] += ev.forceA;
     w.force[e + 1] += ev.forceB;
     energy += ev.energy;
@@ -30,6 +30,7 @@ double assembleRod(const Model& model, int rodIndex, RodState& rod, double time,
     }
   }
   for (const NodalLoad& l : rm.loads) {
+    if (l.node >= rod.activeNodes) continue;
     w.force[l.node].head<3>() += loadFactor * l.force;
     w.force[l.node].tail<3>() += loadFactor * l.moment;
   }
@@ -40,15 +41,16 @@ double assembleRod(const Model& model, int rodIndex, RodState& rod, double time,
   return energy;
 }
 
-Mat3 nodeInertiaGlobal(const RodModel& rod, const Quat& q, int node) {
+Mat3 nodeInertiaGlobal(const RodState& rod, const Quat& q, int node) {
   const Mat3 r = q.toRotationMatrix();
-  return r * rod.nodeInertia[node].asDiagonal() * r.transpose();
+  return r * rod.nodes[node].inertia.asDiagonal() * r.transpose();
 }
 
 void collectFixedDofs(const RodModel& model, RodState& rod) {
   auto& mask = rod.work.fixedMask;
   std::fill(mask.begin(), mask.end(), 0u);
-  for (const Constraint& c : model.constraints) mask[c.node] |= c.mask;
+  for (const Constraint& c : model.constraints)
+    if (c.node < rod.activeNodes) mask[c.node] |= c.mask;
 }
 
 }  // namespace coilsim

@@ -13,7 +13,7 @@ namespace coilsim {
 double assembleRod(const Model& model, int rodIndex, RodState& rod, double time, double loadFactor, bool withTangent);
 
 // Rotational inertia of node i about global axes: R I_material R^T.
-Mat3 nodeInertiaGlobal(const RodModel& rod, const Quat& q, int node);
+Mat3 nodeInertiaGlobal(const RodState& rod, const Quat& q, int node);
 
 // Marks the DOFs held by constraints in work.fixedMask (positions and
 // rotations per DOF), so solvers can pin them.

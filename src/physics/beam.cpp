@@ -82,13 +82,24 @@ void globalTangent(const BeamRest& r, const Mat3& R, BeamEval& out) {
 
 void evalBeam(const BeamRest& rest, const Vec3& xa, const Quat& qa, const Vec3& xb, const Quat& qb,
               bool withTangent, BeamEval& out) {
-  out.frame = qa * rest.nodeToElement;
+  const Quat carried = qa * rest.nodeToElement;  // node a's frame turned by the rest offset
+  const Vec3 chord = xb - xa;
+  const double length = chord.norm();
+  out.frame = (minimalRotation(carried * Vec3::UnitX(), chord / length) * carried).normalized();
   const Mat3 R = out.frame.toRotationMatrix();
-  out.deformation.head<3>() = R.transpose() * (xb - xa) - Vec3(rest.length, 0, 0);
-  out.deformation.tail<3>() = quatLog(out.frame.conjugate() * qb * rest.restRelative.conjugate());
-  // Holding forces of the local element for node a fixed: K(:, b) d_b.
-  const Eigen::Matrix<double, 12, 1> f = rest.stiffness.rightCols<6>() * out.deformation;
-  out.energy = 0.5 * out.deformation.dot(f.tail<6>());
+  out.rotationA = quatLog(out.frame.conjugate() * carried);
+  out.deformation << length - rest.length, 0, 0, quatLog(out.frame.conjugate() * qb * rest.restRelative.conjugate());
+  Eigen::Matrix<double, 12, 1> d;
+  d << 0, 0, 0, out.rotationA, out.deformation;
+  // Holding forces of the local element: K d. The transverse end forces are
+  // then taken from the end moments over the current length, so that the
+  // element balances moments exactly when it is stretched too.
+  Eigen::Matrix<double, 12, 1> f = rest.stiffness * d;
+  out.energy = 0.5 * d.dot(f);
+  f[7] = -(f[5] + f[11]) / length;
+  f[8] = (f[4] + f[10]) / length;
+  f[1] = -f[7];
+  f[2] = -f[8];
   out.forceA.head<3>() = -(R * f.segment<3>(0));
   out.forceA.tail<3>() = -(R * f.segment<3>(3));
   out.forceB.head<3>() = -(R * f.segment<3>(6));

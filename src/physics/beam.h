@@ -6,13 +6,19 @@
 // end loads for any length-to-radius ratio (no shear locking), and it tends
 // to Euler-Bernoulli as the shear factor Phi -> 0 for slender beams.
 //
-// Co-rotation: each element's frame is carried by its first node a (the one
-// nearer the rod's first, constrained node), R_e = R_a Q, Q the constant rest
-// offset that aligns the frame's x with the chord. In that frame node a has
-// zero displacement and rotation by construction; node b's deformation is
-//   u_b = R_e^T (x_b - x_a) - (L0, 0, 0),   theta_b = log(R_e^T R_b P^T),
-// P = rest rotation of b in the rest element frame. A rigid motion of the
-// whole chain changes neither, so large rotations cause no spurious strain.
+// Co-rotation, as in SOFA's BeamFEMForceField that the paper builds on: each
+// element's x axis follows its current chord, and its roll is carried from
+// its first node a (the one nearer the rod's first, constrained node), so
+// frames propagate from that node along the chain:
+//   R_e = M(R_a Q) ,  M the least rotation taking (R_a Q) e_x onto the chord,
+// Q the constant rest offset of the element frame in node a's frame. In R_e
+// the deformation is an axial stretch and two end rotations,
+//   u_b = (|x_b - x_a| - L0, 0, 0),  theta_a = log(R_e^T R_a Q),  theta_b = log(R_e^T R_b P^T),
+// P = rest rotation of b in the rest element frame. A rigid motion changes
+// none of them (no spurious strain), and because x follows the chord the
+// element's end forces balance moments about the deformed element, which a
+// frame rigidly attached to node a does not (that error made large
+// deflections converge at first order only).
 #include "physics/math.h"
 #include "physics/model.h"
 
@@ -25,6 +31,7 @@ Mat12 localBeamStiffness(double length, const Material& material, const Section&
 struct BeamEval {
   Quat frame;         // current element frame R_e
   Vec6 deformation;   // (u_b, theta_b) in the element frame
+  Vec3 rotationA;     // theta_a in the element frame
   Vec6 forceA, forceB;  // elastic restoring force and moment on each node, global
   Mat6 kaa, kba, kbb;   // global tangent blocks (kab = kba^T), without geometric stiffness
   double energy = 0;    // strain energy, J

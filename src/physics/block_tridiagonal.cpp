@@ -73,9 +73,10 @@ void BlockTridiagonalSolver::resize(int n) {
   gain_.assign(n, Mat6::Zero());
 }
 
-bool BlockTridiagonalSolver::factorize(const BlockTridiagonal& a) {
-  const int n = a.size();
-  if (int(chol_.size()) != n) resize(n);
+bool BlockTridiagonalSolver::factorize(const BlockTridiagonal& a, int n) {
+  if (n < 0) n = a.size();
+  if (int(chol_.size()) < n) resize(n);
+  size_ = n;
   for (int i = 0; i < n; ++i) {
     Mat6& s = chol_[i];
     s = a.diag[i];
@@ -89,7 +90,7 @@ bool BlockTridiagonalSolver::factorize(const BlockTridiagonal& a) {
 }
 
 void BlockTridiagonalSolver::solve(std::vector<Vec6>& b) const {
-  const int n = int(chol_.size());
+  const int n = size_;
   Vec6 t;
   for (int i = 0; i < n; ++i) {
     if (i > 0) b[i].noalias() -= gain_[i].transpose() * b[i - 1];
@@ -103,8 +104,8 @@ void BlockTridiagonalSolver::solve(std::vector<Vec6>& b) const {
   }
 }
 
-void applyDirichlet(BlockTridiagonal& a, std::vector<Vec6>& b, int node, int dof, double value) {
-  const int n = a.size();
+void applyDirichlet(BlockTridiagonal& a, std::vector<Vec6>& b, int node, int dof, double value, int n) {
+  if (n < 0) n = a.size();
   if (value != 0.0) {
     b[node] -= a.diag[node].col(dof) * value;
     if (node + 1 < n) b[node + 1] -= a.lower[node].col(dof) * value;

@@ -22,18 +22,21 @@ class BlockTridiagonalSolver {
   void resize(int n);
   // Factorizes A = L L^T. Returns false (and leaves the factor unusable) if a
   // pivot block is not positive definite, i.e. A is not SPD.
-  bool factorize(const BlockTridiagonal& a);
-  // Solves A x = b in place (b becomes x). Requires a successful factorize().
+  // Only the leading n x n blocks take part (n < 0: all).
+  bool factorize(const BlockTridiagonal& a, int n = -1);
+  // Solves A x = b in place (b becomes x) for the size last factorized.
   void solve(std::vector<Vec6>& b) const;
 
  private:
   std::vector<Mat6> chol_;  // (n) inverses C_i^{-1} of the lower Cholesky factors of the Schur complements
   std::vector<Mat6> gain_;  // (n) G_i = C_{i-1}^{-1} A(i, i-1)^T, G_0 unused
+  int size_ = 0;            // leading blocks factorized
 };
 
 // Fixes DOF `dof` of node `node` at value `value`: moves its column to the
 // right-hand side, then replaces its row and column by the identity.
-void applyDirichlet(BlockTridiagonal& a, std::vector<Vec6>& b, int node, int dof, double value);
+// Only the leading n blocks are touched (n < 0: all).
+void applyDirichlet(BlockTridiagonal& a, std::vector<Vec6>& b, int node, int dof, double value, int n = -1);
 
 // Dense copy, for tests and for cross-checking with general solvers.
 Eigen::MatrixXd toDense(const BlockTridiagonal& a);

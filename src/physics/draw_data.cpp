@@ -15,16 +15,21 @@ Colour defaultColour(RodRole role) {
 }
 
 void fillDrawData(const Model& model, const State& state, DrawData& out) {
-  out.tubes.resize(model.rods.size());
+  size_t count = 0;
+  for (const RodState& r : state.rods) count += r.active ? 1 : 0;
+  out.tubes.resize(count);
+  size_t slot = 0;
   for (size_t k = 0; k < model.rods.size(); ++k) {
+    if (!state.rods[k].active) continue;
     const RodModel& rm = model.rods[k];
-    DrawTube& t = out.tubes[k];
+    const RodState& r = state.rods[k];
+    DrawTube& t = out.tubes[slot++];
     t.name = rm.name;
     t.role = rm.role;
     t.radius = rm.section.radius;
-    t.centre = state.rods[k].x;
-    t.frames = state.rods[k].q;
-    t.colours.assign(rm.nnode, defaultColour(rm.role));
+    t.centre.assign(r.x.begin(), r.x.begin() + r.activeNodes);
+    t.frames.assign(r.q.begin(), r.q.begin() + r.activeNodes);
+    t.colours.assign(r.activeNodes, defaultColour(rm.role));
   }
 }
 

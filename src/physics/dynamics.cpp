@@ -10,11 +10,13 @@ namespace {
 void saveStart(RodState& r) {
   RodWorkspace& w = r.work;
   w.x0 = r.x, w.q0 = r.q, w.v0 = r.v, w.w0 = r.w;
+  w.targets0 = r.targets;
 }
 
 void restoreStart(RodState& r) {
   const RodWorkspace& w = r.work;
   r.x = w.x0, r.q = w.q0, r.v = w.v0, r.w = w.w0;
+  r.targets = w.targets0;
 }
 
 // Generalised velocity each constrained node must have to reach its target
@@ -23,6 +25,7 @@ void prescribedVelocities(const RodModel& rm, RodState& r, double h) {
   RodWorkspace& w = r.work;
   for (size_t k = 0; k < rm.constraints.size(); ++k) {
     const int i = rm.constraints[k].node;
+    if (i >= r.activeNodes) continue;
     const Pose& t = r.targets[k];
     w.fixedValue[i].head<3>() = (t.position - w.x0[i]) / h;
     w.fixedValue[i].tail<3>() = quatLog(t.rotation * w.q0[i].conjugate()) / h;
@@ -32,7 +35,7 @@ void prescribedVelocities(const RodModel& rm, RodState& r, double h) {
 // Poses at the end of the step for the current velocity guess.
 void integratePoses(RodState& r, double h) {
   const RodWorkspace& w = r.work;
-  for (size_t i = 0; i < r.x.size(); ++i) {
+  for (int i = 0; i < r.activeNodes; ++i) {
     r.x[i] = w.x0[i] + h * r.v[i];
     r.q[i] = (quatExp(h * r.w[i]) * w.q0[i]).normalized();
   }
@@ -42,7 +45,7 @@ StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, l
   const RodModel& rm = model.rods[rodIndex];
   RodWorkspace& w = r.work;
   const double h = model.timeStep, a = model.damping.massCoeff, b = model.damping.stiffnessCoeff;
-  const int n = rm.nnode;
+  const int n = r.activeNodes;
   collectFixedDofs(rm, r);
   prescribedVelocities(rm, r, h);
 
@@ -56,8 +59,8 @@ StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, l
     for (int i = 0; i < n; ++i) {
       Vec6& vel = w.velocity[i];
       vel << r.v[i], r.w[i];
-      const double m = rm.nodeMass[i];
-      const Mat3 inertia = nodeInertiaGlobal(rm, w.q0[i], i);
+      const double m = r.nodes[i].mass;
+      const Mat3 inertia = nodeInertiaGlobal(r, w.q0[i], i);
       // Mass and Rayleigh mass damping act on translation and rotation separately.
       Vec6 massTimes;  // M (a vel) and, from the second iteration, M (vel - v0) / h
       massTimes.head<3>() = a * m * r.v[i];
@@ -72,9 +75,10 @@ StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, l
       Ad.bottomRightCorner<3, 3>() += (1 + h * a) * inertia;
       Vec6 rhs = w.force[i] - massTimes;
       rhs.noalias() -= kRhs * (K.diag[i] * vel);
+      // An effect's force already holds its own damping (-D v); D and K only
+      // make the matrix implicit in them.
       if (w.effectsTouchedMatrix) {
         Ad += h * w.effectD[i] + h * h * w.effectK[i];
-        rhs.noalias() -= w.effectD[i] * vel;
         if (it == 0) rhs.noalias() -= h * (w.effectK[i] * vel);
       }
       w.rhs[i] = h * rhs;
@@ -89,9 +93,9 @@ StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, l
       const unsigned m = w.fixedMask[i];
       if (!m) continue;
       for (int d = 0; d < 6; ++d)
-        if (m & (1u << d)) applyDirichlet(A, w.rhs, i, d, w.fixedValue[i][d] - w.velocity[i][d]);
+        if (m & (1u << d)) applyDirichlet(A, w.rhs, i, d, w.fixedValue[i][d] - w.velocity[i][d], n);
     }
-    if (!w.solver.factorize(A))
+    if (!w.solver.factorize(A, n))
       return {StepStatus::SolverFailure, "rod '" + rm.name + "': implicit matrix is not positive definite"};
     w.solver.solve(w.rhs);
     for (int i = 0; i < n; ++i) {
@@ -123,14 +127,13 @@ StepReport step(const Model& model, State& state) {
   StepReport report;
   long iterations = 0;
   for (size_t k = 0; k < model.rods.size() && report.ok(); ++k)
-    report = stepRod(model, int(k), state.rods[k], state.time, iterations);
+    if (state.rods[k].active) report = stepRod(model, int(k), state.rods[k], state.time, iterations);
   if (report.ok()) {
     const std::string problem = checkHealth(model, state);
     if (!problem.empty()) report = {StepStatus::BlowUp, problem};
   }
   if (!report.ok()) {
     for (RodState& r : state.rods) restoreStart(r);
-    advanceTargets(model, state, -model.timeStep);
     ++state.blowups;
     warnOnce(state, "step refused at t = " + std::to_string(state.time) + " s: " + report.message);
   } else {

@@ -12,8 +12,9 @@ std::string checkHealth(const Model& model, const State& state) {
   for (size_t k = 0; k < model.rods.size(); ++k) {
     const RodModel& rm = model.rods[k];
     const RodState& r = state.rods[k];
+    if (!r.active) continue;
     const std::string where = "rod '" + rm.name + "' node ";
-    for (int i = 0; i < rm.nnode; ++i) {
+    for (int i = 0; i < r.activeNodes; ++i) {
       if (!r.x[i].allFinite() || !r.q[i].coeffs().allFinite() || !r.v[i].allFinite() || !r.w[i].allFinite())
         return where + std::to_string(i) + ": non-finite position, rotation or velocity";
       if (r.v[i].norm() > lim.maxSpeed)
@@ -22,8 +23,8 @@ std::string checkHealth(const Model& model, const State& state) {
       if (r.w[i].norm() > lim.maxAngularSpeed)
         return where + std::to_string(i) + ": angular speed exceeds " + std::to_string(lim.maxAngularSpeed) + " rad/s";
     }
-    for (int e = 0; e < rm.nbeam(); ++e) {
-      const double strain = (r.x[e + 1] - r.x[e]).norm() / rm.beams[e].length - 1.0;
+    for (int e = 0; e + 1 < r.activeNodes; ++e) {
+      const double strain = (r.x[e + 1] - r.x[e]).norm() / r.beams[e].length - 1.0;
       if (std::abs(strain) > lim.maxAxialStrain)
         return "rod '" + rm.name + "' beam " + std::to_string(e) + ": axial strain " + std::to_string(strain) +
                " beyond " + std::to_string(lim.maxAxialStrain);
@@ -38,19 +39,21 @@ Energy computeEnergy(const Model& model, const State& state) {
   for (size_t k = 0; k < model.rods.size(); ++k) {
     const RodModel& rm = model.rods[k];
     const RodState& r = state.rods[k];
-    for (int i = 0; i < rm.nnode; ++i) {
+    if (!r.active) continue;
+    for (int i = 0; i < r.activeNodes; ++i) {
       const Mat3 R = r.q[i].toRotationMatrix();
       const Vec3 wBody = R.transpose() * r.w[i];
-      en.kinetic += 0.5 * rm.nodeMass[i] * r.v[i].squaredNorm() + 0.5 * wBody.dot(rm.nodeInertia[i].cwiseProduct(wBody));
+      en.kinetic += 0.5 * r.nodes[i].mass * r.v[i].squaredNorm() + 0.5 * wBody.dot(r.nodes[i].inertia.cwiseProduct(wBody));
     }
-    for (int e = 0; e < rm.nbeam(); ++e) {
-      evalBeam(rm.beams[e], r.x[e], r.q[e], r.x[e + 1], r.q[e + 1], false, ev);
+    for (int e = 0; e + 1 < r.activeNodes; ++e) {
+      evalBeam(r.beams[e], r.x[e], r.q[e], r.x[e + 1], r.q[e + 1], false, ev);
       en.elastic += ev.energy;
     }
     const EffectContext ctx{model, rm, r, state.time, 1.0};
     for (const EffectUse& u : model.effects)
       if (u.enabled) en.potential += u.effect->energy(ctx, u.values);
-    for (const NodalLoad& l : rm.loads) en.potential -= l.force.dot(r.x[l.node]);  // moments: no potential kept
+    for (const NodalLoad& l : rm.loads)
+      if (l.node < r.activeNodes) en.potential -= l.force.dot(r.x[l.node]);  // moments: no potential kept
   }
   return en;
 }

@@ -41,17 +41,28 @@ std::vector<Vec3> resample(const std::vector<Vec3>& pts, double length, int beam
     out[i] = (1 - a) * pts[k] + a * pts[k + 1];
   }
   const double scale = length / total;
-  for (auto& p : out) p = (p - out.front()) * scale;
+  const Vec3 origin = out.front();
+  for (auto& p : out) p = (p - origin) * scale;
   return out;
 }
 
+// Tangents at equally spaced samples, exact on circular arcs: central
+// differences inside; at an end, the end chord turned back by half the angle
+// between the last two chords (a bare chord there would halve the end beams'
+// rest curvature).
 std::vector<Vec3> nodeTangents(const std::vector<Vec3>& x) {
   const size_t n = x.size();
   std::vector<Vec3> t(n);
-  for (size_t i = 0; i < n; ++i) {
-    const Vec3 d = x[std::min(i + 1, n - 1)] - x[i == 0 ? 0 : i - 1];
-    t[i] = d.normalized();
+  for (size_t i = 1; i + 1 < n; ++i) t[i] = (x[i + 1] - x[i - 1]).normalized();
+  auto halfTurn = [](const Vec3& from, const Vec3& to) { return quatExp(0.5 * quatLog(minimalRotation(from, to))); };
+  if (n < 3) {
+    t[0] = t[n - 1] = (x[n - 1] - x[0]).normalized();
+    return t;
   }
+  const Vec3 e0 = (x[1] - x[0]).normalized(), e1 = (x[2] - x[1]).normalized();
+  t[0] = (halfTurn(e1, e0) * e0).normalized();
+  const Vec3 f0 = (x[n - 2] - x[n - 3]).normalized(), f1 = (x[n - 1] - x[n - 2]).normalized();
+  t[n - 1] = (halfTurn(f0, f1) * f1).normalized();
   return t;
 }
 

@@ -11,6 +11,10 @@ State makeState(const Model& model) {
   for (const RodModel& rod : model.rods) {
     RodState r;
     const int n = rod.nnode;
+    r.activeNodes = n;
+    r.beams = rod.beams;
+    for (int i = 0; i < n; ++i)
+      r.nodes.push_back({rod.nodeMass[i], rod.nodeInertia[i], rod.nodeLength[i], rod.section.radius});
     r.x = rod.restPoints;
     r.q = rod.restFrames;
     r.v.assign(n, Vec3::Zero());

@@ -6,11 +6,10 @@
 #include <vector>
 
 #include "physics/block_tridiagonal.h"
+#include "physics/model.h"
 #include "physics/math.h"
 
 namespace coilsim {
-
-struct Model;
 
 struct Pose {
   Vec3 position = Vec3::Zero();
@@ -31,11 +30,30 @@ struct RodWorkspace {
   std::vector<Vec3> x0;          // (nnode) start-of-step copy, for restore
   std::vector<Quat> q0;
   std::vector<Vec3> v0, w0;
-  std::vector<unsigned> fixedMask;  // (nnode) constrained DOFs
+  std::vector<Pose> targets0;    // constraint targets at the start of the step
+  std::vector<unsigned> fixedMask;  // (nnode) constrained DOFs (of active nodes)
   std::vector<Vec6> fixedValue;     // (nnode) prescribed increments of constrained DOFs
 };
 
+// Lumped properties of one node as the step uses them.
+struct NodeProps {
+  double mass = 0;              // kg
+  Vec3 inertia = Vec3::Zero();  // rotational inertia in the material frame (t, d1, d2), kg m^2
+  double length = 0;            // length of rod the node stands for, m
+  double radius = 0;            // outer radius there (buoyancy, drag, contact), m
+};
+
 struct RodState {
+  // The chain as it is now. Normally the Model's rod unchanged; a deployment
+  // rewrites these as coil material slides out of the catheter (composite
+  // elements, the partial element at the tip, nodes appearing there), so
+  // they are state, not model. Arrays keep their size; only the first
+  // `activeNodes` nodes (and activeNodes - 1 beams) take part in a step.
+  bool active = true;
+  int activeNodes = 0;
+  std::vector<BeamRest> beams;  // (nnode-1) element constants
+  std::vector<NodeProps> nodes; // (nnode)
+
   std::vector<Vec3> x;  // (nnode) positions, m
   std::vector<Quat> q;  // (nnode) material frames
   std::vector<Vec3> v;  // (nnode) velocities, m/s

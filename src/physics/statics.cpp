@@ -1,6 +1,8 @@
+#include <Eigen/LU>
 #include <cmath>
 
 #include "physics/assembly.h"
+#include "physics/beam.h"
 #include "physics/integrator.h"
 
 namespace coilsim {
@@ -11,6 +13,7 @@ namespace {
 void snapToTargets(const RodModel& rm, RodState& r) {
   for (size_t k = 0; k < rm.constraints.size(); ++k) {
     const Constraint& c = rm.constraints[k];
+    if (c.node >= r.activeNodes) continue;
     for (int d = 0; d < 3; ++d)
       if (c.mask & (1u << d)) r.x[c.node][d] = r.targets[k].position[d];
     if ((c.mask & kRotation) == kRotation) r.q[c.node] = r.targets[k].rotation;
@@ -19,35 +22,136 @@ void snapToTargets(const RodModel& rm, RodState& r) {
 
 enum class NewtonResult { Converged, NotConverged, Singular, Unhealthy };
 
+// A general (non-symmetric) block-tridiagonal matrix and its block LU.
+// The consistent tangent of co-rotational forces is not symmetric away from
+// equilibrium, and symmetrising it costs Newton its quadratic convergence.
+struct GeneralTridiagonal {
+  std::vector<Mat6> diag, lower, upper;  // A(i,i), A(i+1,i), A(i,i+1)
+  std::vector<Eigen::PartialPivLU<Mat6>> pivots;
+  std::vector<Vec6> rhs;
+  void resize(int n) {
+    diag.assign(n, Mat6::Zero());
+    lower.assign(std::max(0, n - 1), Mat6::Zero());
+    upper.assign(std::max(0, n - 1), Mat6::Zero());
+    pivots.resize(n);
+    rhs.assign(n, Vec6::Zero());
+  }
+  // Holds DOF d of node i at zero increment.
+  void fix(int i, int d) {
+    diag[i].row(d).setZero();
+    diag[i].col(d).setZero();
+    diag[i](d, d) = 1;
+    if (i + 1 < int(diag.size())) lower[i].col(d).setZero(), upper[i].row(d).setZero();
+    if (i > 0) lower[i - 1].row(d).setZero(), upper[i - 1].col(d).setZero();
+    rhs[i][d] = 0;
+  }
+  // Solves in place (rhs becomes the solution); false if a pivot block is singular.
+  bool solve(int n) {
+    for (int i = 0; i < n; ++i) {
+      if (i > 0) {
+        const Mat6 l = lower[i - 1] * pivots[i - 1].inverse();  // A(i,i-1) S^{-1}
+        diag[i].noalias() -= l * upper[i - 1];
+        rhs[i].noalias() -= l * rhs[i - 1];
+      }
+      pivots[i].compute(diag[i]);
+      if (!(std::abs(pivots[i].determinant()) > 0) || !std::isfinite(pivots[i].determinant())) return false;
+    }
+    for (int i = n - 1; i >= 0; --i) {
+      if (i + 1 < n) rhs[i].noalias() -= upper[i] * rhs[i + 1];
+      rhs[i] = pivots[i].solve(rhs[i]);
+    }
+    return rhs[0].allFinite();
+  }
+};
+
+// The consistent (geometric) tangent of the elastic forces, element by
+// element, by forward differences of evalBeam in the same increments the
+// update uses (x += dx, q = exp(dtheta) q). The analytic
+// co-rotational tangent T K T^T lacks the geometric stiffness of the turning
+// element frames; with it Newton diverges once loads rotate the rod a lot
+// (an end-loaded cantilever from P L^2 / EI ~ 3 on). Statics only: the cost
+// is 13 element evaluations per element and iteration.
+void consistentTangent(const RodState& r, GeneralTridiagonal& K) {
+  for (int i = 0; i < r.activeNodes; ++i) K.diag[i].setZero();
+  for (int e = 0; e + 1 < r.activeNodes; ++e) K.lower[e].setZero(), K.upper[e].setZero();
+  BeamEval ev;
+  Eigen::Matrix<double, 12, 1> f;
+  Eigen::Matrix<double, 12, 12> k;
+  for (int e = 0; e + 1 < r.activeNodes; ++e) {
+    const BeamRest& b = r.beams[e];
+    const Vec3 xa = r.x[e], xb = r.x[e + 1];
+    const Quat qa = r.q[e], qb = r.q[e + 1];
+    for (int j = 0; j < 12; ++j) {
+      const int node = j / 6, dof = j % 6;
+      const double eps = dof < 3 ? 1e-6 * b.length : 1e-6;
+      // Central differences: second-order accurate, so Newton stays quadratic.
+      for (const double sign : {1.0, -1.0}) {
+        Vec3 pa = xa, pb = xb;
+        Quat ra = qa, rb = qb;
+        Vec3 delta = Vec3::Zero();
+        delta[dof % 3] = sign * eps;
+        if (dof < 3) (node == 0 ? pa : pb) += delta;
+        else (node == 0 ? ra : rb) = quatExp(delta) * (node == 0 ? qa : qb);
+        evalBeam(b, pa, ra, pb, rb, false, ev);
+        f << ev.forceA, ev.forceB;
+        if (sign > 0) k.col(j) = f;
+        else k.col(j) = -(k.col(j) - f) / (2 * eps);
+      }
+    }
+    K.diag[e] += k.topLeftCorner<6, 6>();
+    K.diag[e + 1] += k.bottomRightCorner<6, 6>();
+    K.lower[e] += k.bottomLeftCorner<6, 6>();
+    K.upper[e] += k.topRightCorner<6, 6>();
+  }
+}
+
+// Newton iterations at load factor lambda on the consistent tangent; an
+// indefinite or singular tangent is shifted towards its diagonal.
 NewtonResult newton(const Model& model, int k, RodState& r, double lambda, const StaticOptions& o, int& iterations) {
-  const RodModel& rm = model.rods[k];
   RodWorkspace& w = r.work;
+  const int n = r.activeNodes;
   double length = 0;
-  for (const BeamRest& b : rm.beams) length += b.length;
+  for (int e = 0; e + 1 < n; ++e) length += r.beams[e].length;
+  std::vector<Vec3> xStart(n);
+  std::vector<Quat> qStart(n);
+  assembleRod(model, k, r, 0.0, lambda, false);
+  GeneralTridiagonal K;
+  K.resize(n);
   for (int it = 0; it < o.maxIterations; ++it) {
     ++iterations;
-    assembleRod(model, k, r, 0.0, lambda, true);
-    BlockTridiagonal& A = w.system;
-    for (int i = 0; i < rm.nnode; ++i) {
-      A.diag[i] = w.stiffness.diag[i];
-      if (w.effectsTouchedMatrix) A.diag[i] += w.effectK[i];
-      w.rhs[i] = w.force[i];
+    bool solved = false;
+    // An indefinite or singular tangent is shifted towards its diagonal.
+    for (double shift = 0; !solved && shift <= 1e6; shift = shift == 0 ? 1e-6 : shift * 10) {
+      consistentTangent(r, K);
+      for (int i = 0; i < n; ++i) {
+        if (w.effectsTouchedMatrix) K.diag[i] += w.effectK[i];
+        K.diag[i].diagonal() += shift * K.diag[i].diagonal().cwiseAbs();
+        K.rhs[i] = w.force[i];
+        for (int d = 0; d < 6; ++d)
+          if (w.fixedMask[i] & (1u << d)) K.fix(i, d);
+      }
+      solved = K.solve(n);
     }
-    for (int e = 0; e + 1 < rm.nnode; ++e) A.lower[e] = w.stiffness.lower[e];
-    for (int i = 0; i < rm.nnode; ++i)
-      for (int d = 0; d < 6; ++d)
-        if (w.fixedMask[i] & (1u << d)) applyDirichlet(A, w.rhs, i, d, 0.0);
-    if (!w.solver.factorize(A)) return NewtonResult::Singular;
-    w.solver.solve(w.rhs);
+    if (!solved) return NewtonResult::Singular;
+    for (int i = 0; i < n; ++i) w.rhs[i] = K.rhs[i];
+    for (int i = 0; i < n; ++i) xStart[i] = r.x[i], qStart[i] = r.q[i];
     double dx = 0, dr = 0;
-    for (int i = 0; i < rm.nnode; ++i) {
-      r.x[i] += w.rhs[i].head<3>();
-      r.q[i] = (quatExp(w.rhs[i].tail<3>()) * r.q[i]).normalized();
+    for (int i = 0; i < n; ++i) {
       dx = std::max(dx, w.rhs[i].head<3>().norm());
       dr = std::max(dr, w.rhs[i].tail<3>().norm());
     }
     if (!std::isfinite(dx) || !std::isfinite(dr)) return NewtonResult::Unhealthy;
-    if (dx < o.positionTolerance * length && dr < o.rotationTolerance) return NewtonResult::Converged;
+    // Full Newton steps: a residual-based line search would reject them,
+    // since a linearised step stretches a slender rod to second order and
+    // the next iteration, not a shorter step, removes that. Only steps that
+    // would turn a node by more than half a radian are scaled down.
+    const double alpha = std::min(1.0, 0.5 / std::max(dr, 1e-300));
+    for (int i = 0; i < n; ++i) {
+      r.x[i] = xStart[i] + alpha * w.rhs[i].head<3>();
+      r.q[i] = (quatExp(alpha * w.rhs[i].tail<3>()) * qStart[i]).normalized();
+    }
+    assembleRod(model, k, r, 0.0, lambda, false);
+    if (alpha * dx < o.positionTolerance * length && alpha * dr < o.rotationTolerance) return NewtonResult::Converged;
   }
   return NewtonResult::NotConverged;
 }
@@ -59,6 +163,7 @@ StaticReport solveStatic(const Model& model, State& state, const StaticOptions& 
   for (size_t k = 0; k < model.rods.size(); ++k) {
     const RodModel& rm = model.rods[k];
     RodState& r = state.rods[k];
+    if (!r.active) continue;
     if (rm.constraints.empty()) {
       rep.message = "rod '" + rm.name + "' has no constraint: its static equilibrium is not defined";
       return rep;

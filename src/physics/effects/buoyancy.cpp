@@ -1,4 +1,6 @@
 // Buoyancy (Archimedes): the displaced fluid's weight, -rho_f A l g per node.
+#include <cmath>
+
 #include "physics/effects/builtin.h"
 #include "physics/model.h"
 #include "physics/state.h"
@@ -11,19 +13,22 @@ constexpr ParamSpec kParams[] = {
      1000.0},
 };
 
+// The fluid displaced by a node's piece of rod (a cylinder of its outer radius).
+double displacedVolume(const NodeProps& n) { return M_PI * n.radius * n.radius * n.length; }
+
 class Buoyancy final : public Effect {
  public:
   std::string_view name() const override { return "buoyancy"; }
   std::string_view description() const override { return "upthrust of the surrounding fluid"; }
   std::span<const ParamSpec> params() const override { return kParams; }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
-    const double rhoA = p[0] * c.rod.section.area;
-    for (int i = 0; i < c.rod.nnode; ++i) out.force[i].head<3>() -= c.loadFactor * rhoA * c.rod.nodeLength[i] * c.model.gravity;
+    for (int i = 0; i < c.state.activeNodes; ++i)
+      out.force[i].head<3>() -= c.loadFactor * p[0] * displacedVolume(c.state.nodes[i]) * c.model.gravity;
   }
   double energy(const EffectContext& c, std::span<const double> p) const override {
     double e = 0;
-    for (int i = 0; i < c.rod.nnode; ++i)
-      e += p[0] * c.rod.section.area * c.rod.nodeLength[i] * c.model.gravity.dot(c.state.x[i]);
+    for (int i = 0; i < c.state.activeNodes; ++i)
+      e += p[0] * displacedVolume(c.state.nodes[i]) * c.model.gravity.dot(c.state.x[i]);
     return e;
   }
 };

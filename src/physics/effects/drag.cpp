@@ -24,14 +24,14 @@ class Drag final : public Effect {
   std::string_view description() const override { return "viscous drag of the medium (resistive-force theory)"; }
   std::span<const ParamSpec> params() const override { return kParams; }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
-    const double mu = p[0], lambda = p[1], r = c.rod.section.radius;
-    // Keep the logarithm away from its pole for absurdly short lambda.
-    const double lg = std::max(std::log(2.0 * lambda / r), 1.0);
-    const double cn = 4 * M_PI * mu / (lg + 0.5), ct = 2 * M_PI * mu / (lg - 0.5);
-    for (int i = 0; i < c.rod.nnode; ++i) {
+    const double mu = p[0], lambda = p[1];
+    for (int i = 0; i < c.state.activeNodes; ++i) {
+      // Keep the logarithm away from its pole for absurdly short lambda.
+      const double lg = std::max(std::log(2.0 * lambda / c.state.nodes[i].radius), 1.0);
+      const double cn = 4 * M_PI * mu / (lg + 0.5), ct = 2 * M_PI * mu / (lg - 0.5);
       const Vec3 t = c.state.q[i] * Vec3::UnitX();
       const Mat3 tt = t * t.transpose();
-      const Mat3 d = c.rod.nodeLength[i] * (cn * (Mat3::Identity() - tt) + ct * tt);
+      const Mat3 d = c.state.nodes[i].length * (cn * (Mat3::Identity() - tt) + ct * tt);
       out.force[i].head<3>() -= d * c.state.v[i];
       out.damping[i].topLeftCorner<3, 3>() += d;
       out.touchedMatrix = true;
