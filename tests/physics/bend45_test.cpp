@@ -24,6 +24,7 @@
 
 #include <cmath>
 
+#include "support/bend45.h"
 #include "support/known_bugs.h"
 #include "support/rod_models.h"
 #include "support/tolerance.h"
@@ -31,29 +32,10 @@
 namespace coilsim::test {
 namespace {
 
-constexpr double kRadius = 100;
 constexpr int kBeams = 32;
 
-RestCurve bend(int beams) {
-  RestCurve c;
-  for (int i = 0; i <= beams; ++i) {
-    const double phi = M_PI / 4 * i / beams;
-    c.points.emplace_back(kRadius * std::sin(phi), kRadius * (1 - std::cos(phi)), 0.0);
-    Mat3 f;
-    f.col(0) = Vec3(std::cos(phi), std::sin(phi), 0);   // tangent
-    f.col(1) = Vec3(-std::sin(phi), std::cos(phi), 0);  // d1: towards the centre
-    f.col(2) = Vec3::UnitZ();                           // d2: out of plane
-    c.frames.emplace_back(f);
-  }
-  return c;
-}
-
 Vec3 tipUnder(double load) {
-  const double e = 1e7, g = e / 2;
-  const Section s = customSection(1.0, 1.0 / 12, 1.0 / 12, 0.141, 5.0 / 6, 0.5);
-  RodDef r = clamped(rodWithRest(bend(kBeams), kRadius * M_PI / 4, kBeams, {e, g, 1.0}, s));
-  r.loads.push_back({kBeams, Vec3(0, 0, load), Vec3::Zero()});
-  const Model m = compileModel(modelOf({r}));
+  const Model m = compileModel(modelOf({bend45Rod(kBeams, load)}));
   State st = makeState(m);
   const StaticReport rep = solveStatic(m, st, tightStatic(20));
   EXPECT_TRUE(rep.converged) << "P = " << load << ": " << rep.message;
@@ -71,8 +53,8 @@ void expectTip(const std::string& tag, const Vec3& tip, const Vec3& ref) {
 TEST(Bend45Test, UnloadedBendKeepsItsShape) {
   const Vec3 tip = tipUnder(0.0);
   EXPECT_TRUE(nearVec("unloaded tip vs (100 sin 45, 100 (1 - cos 45), 0)", tip,
-                      Vec3(kRadius * std::sin(M_PI / 4), kRadius * (1 - std::cos(M_PI / 4)), 0),
-                      roundoff(kRadius, 100, "rest shape, no load")));
+                      Vec3(kBend45Radius * std::sin(M_PI / 4), kBend45Radius * (1 - std::cos(M_PI / 4)), 0),
+                      roundoff(kBend45Radius, 100, "rest shape, no load")));
 }
 
 TEST(Bend45Test, TipPositionsMatchSimoVuQuocAndBatheBolourchi) {
