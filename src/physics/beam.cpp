@@ -83,12 +83,15 @@ void globalTangent(const BeamRest& r, const Mat3& R, BeamEval& out) {
 void evalBeam(const BeamRest& rest, const Vec3& xa, const Quat& qa, const Vec3& xb, const Quat& qb,
               bool withTangent, BeamEval& out) {
   const Quat carried = qa * rest.nodeToElement;  // node a's frame turned by the rest offset
+  const Quat carriedB = qb * rest.restRelative.conjugate();  // the same frame as node b carries it
+  // Mean of the two carried frames: halfway along the relative rotation.
+  const Quat mean = (carried * quatExp(0.5 * quatLog(carried.conjugate() * carriedB))).normalized();
   const Vec3 chord = xb - xa;
   const double length = chord.norm();
-  out.frame = (minimalRotation(carried * Vec3::UnitX(), chord / length) * carried).normalized();
+  out.frame = (minimalRotation(mean * Vec3::UnitX(), chord / length) * mean).normalized();
   const Mat3 R = out.frame.toRotationMatrix();
   out.rotationA = quatLog(out.frame.conjugate() * carried);
-  out.deformation << length - rest.length, 0, 0, quatLog(out.frame.conjugate() * qb * rest.restRelative.conjugate());
+  out.deformation << length - rest.length, 0, 0, quatLog(out.frame.conjugate() * carriedB);
   Eigen::Matrix<double, 12, 1> d;
   d << 0, 0, 0, out.rotationA, out.deformation;
   // Holding forces of the local element: K d. The transverse end forces are

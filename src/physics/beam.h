@@ -7,11 +7,14 @@
 // to Euler-Bernoulli as the shear factor Phi -> 0 for slender beams.
 //
 // Co-rotation, as in SOFA's BeamFEMForceField that the paper builds on: each
-// element's x axis follows its current chord, and its roll is carried from
-// its first node a (the one nearer the rod's first, constrained node), so
-// frames propagate from that node along the chain:
-//   R_e = M(R_a Q) ,  M the least rotation taking (R_a Q) e_x onto the chord,
-// Q the constant rest offset of the element frame in node a's frame. In R_e
+// element's x axis follows its current chord; its roll is that of the mean
+// of the frames its two nodes carry (R_a Q and R_b P^T), so frames propagate
+// from node to node along the chain from the constrained first node:
+//   R_m = R_a Q exp(log((R_a Q)^T R_b P^T) / 2),  R_e = M R_m,
+// M the least rotation taking R_m e_x onto the chord, Q the constant rest
+// offset of the element frame in node a's frame. (The paper takes the roll
+// from the first node alone; under bending plus torsion of a curved rod that
+// is a first-order error in the beam length, the mean is second order.) In R_e
 // the deformation is an axial stretch and two end rotations,
 //   u_b = (|x_b - x_a| - L0, 0, 0),  theta_a = log(R_e^T R_a Q),  theta_b = log(R_e^T R_b P^T),
 // P = rest rotation of b in the rest element frame. A rigid motion changes
