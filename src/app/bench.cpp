@@ -12,6 +12,7 @@
 #include <map>
 #include <string>
 
+#include "physics/controller.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
 
@@ -115,6 +116,34 @@ void benchSolver(Figures& fig, int beams, bool quick) {
   fig.set("sparselu_over_block" + n, fig.values["sparse_lu_us" + n] / fig.values["block_solve_us" + n]);
 }
 
+// Deployment of the paper's 150 mm coil out of the catheter tip at a
+// clinical push speed, with gravity, buoyancy and drag: simulated seconds per
+// wall-clock second (above 1: faster than real time).
+void benchDeployment(Figures& fig, int beams, double speedMmS, bool quick) {
+  ModelDef def;
+  for (const char* e : {"gravity", "buoyancy", "drag"}) def.effects.push_back(EffectRegistry::global().use(e));
+  def.damping = {1.0, 0.0};
+  def.timeStep = 1e-3;
+  DeploymentDef d;
+  d.coilLength = 0.150;
+  d.coilBeams = beams;
+  d.coilRest = makeHelix(d.coilLength, beams, 0.007, 0.00096, true);
+  d.coilMaterial = {7.5e9, shearModulusOf(7.5e9, 0.39), 21450};
+  d.coilSection = circularSection(0.3556e-3, 0.39);
+  d.tip.normal = Vec3(0, 0, 1);
+  const Deployment dep = addDeployment(d, def);
+  const Model m = compileModel(def);
+  State s = makeState(m);
+  DeploymentState ds = initDeployment(dep, m, s, 0.0, 0.0);
+  DeploymentController ctl;
+  const double v = speedMmS * 1e-3, simulated = (quick ? 0.25 : 1.0) * d.coilLength / v;
+  const auto t0 = Clock::now();
+  const TimelineRun run = runTimeline(dep, m, s, ds, ctl, {{0.0, {DeviceCommand::Kind::Push, v, 0}}}, simulated);
+  const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+  const std::string key = "deploy_realtime_ratio_n" + std::to_string(beams) + "_" + std::to_string(int(speedMmS)) + "mm_s";
+  fig.set(key, run.ok ? simulated / wall : 0.0);
+}
+
 }  // namespace
 
 int runBench(const std::vector<std::string>& args) {
@@ -132,6 +161,11 @@ int runBench(const std::vector<std::string>& args) {
     if (!json) std::fprintf(stderr, "bench: %d beams...\n", beams);
     benchSolver(fig, beams, quick);
   }
+  for (int beams : {150, 300})
+    for (double speed : {1.0, 10.0}) {
+      if (!json) std::fprintf(stderr, "bench: deploying the 150 mm coil, %d beams, %g mm/s...\n", beams, speed);
+      benchDeployment(fig, beams, speed, quick);
+    }
   fig.set("step_cost_ratio_n3000_over_n100_per_beam",
           fig.values["step_us_n3000"] / 3000.0 / (fig.values["step_us_n100"] / 100.0));
   if (json) {
@@ -151,6 +185,12 @@ int runBench(const std::vector<std::string>& args) {
   }
   std::printf("step cost per beam, n=3000 relative to n=100: %.2f (1.0 = linear)\n",
               fig.values["step_cost_ratio_n3000_over_n100_per_beam"]);
+  std::printf("deploying the 150 mm coil (gravity, buoyancy, drag; 1 ms steps), simulated / wall time:\n");
+  for (int beams : {150, 300})
+    for (int speed : {1, 10}) {
+      const std::string k = "deploy_realtime_ratio_n" + std::to_string(beams) + "_" + std::to_string(speed) + "mm_s";
+      std::printf("  %3d beams at %2d mm/s: %.1fx real time\n", beams, speed, fig.values[k]);
+    }
   return 0;
 }
 
