@@ -1,6 +1,7 @@
 // SceneSpec checks across fields, and its compilation into an SI ModelDef.
 #include "io/scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -29,16 +30,20 @@ void checkNode(const SceneSpec& s, const RodSpec& rod, const NodeRef& node, cons
              std::to_string(rod.beams) + " (beams + 1 nodes); \"last\" names node " + std::to_string(rod.beams));
 }
 
+// A polyline rest shape must be as long as the rod (or coil) it shapes.
+void checkRestShape(const SceneSpec& s, const RestShapeSpec& rest, double lengthMm, const std::string& at) {
+  if (rest.type != RestShapeSpec::Type::Polyline) return;
+  double arc = 0;
+  for (size_t i = 1; i < rest.pointsMm.size(); ++i) arc += (rest.pointsMm[i] - rest.pointsMm[i - 1]).norm();
+  if (!(std::abs(arc - lengthMm) <= 0.01 * lengthMm))
+    fail(s, at + "/rest_shape/points_mm",
+         "the polyline is " + fmt(arc) + " mm long but length_mm is " + fmt(lengthMm) +
+             " mm; they must agree within 1 %");
+}
+
 void checkRod(const SceneSpec& s, const RodSpec& rod, size_t k) {
   const std::string at = rodPath(k);
-  if (rod.rest.type == RestShapeSpec::Type::Polyline) {
-    double arc = 0;
-    for (size_t i = 1; i < rod.rest.pointsMm.size(); ++i) arc += (rod.rest.pointsMm[i] - rod.rest.pointsMm[i - 1]).norm();
-    if (!(std::abs(arc - rod.lengthMm) <= 0.01 * rod.lengthMm))
-      fail(s, at + "/rest_shape/points_mm",
-           "the polyline is " + fmt(arc) + " mm long but length_mm is " + fmt(rod.lengthMm) +
-               " mm; they must agree within 1 %");
-  }
+  checkRestShape(s, rod.rest, rod.lengthMm, at);
   const PlacementSpec& p = rod.placement;
   if (!(p.direction.norm() > 1e-12)) fail(s, at + "/placement/direction", "expected a non-zero vector, got [0, 0, 0]");
   const Vec3 t = p.direction.normalized();
@@ -60,6 +65,39 @@ void checkRod(const SceneSpec& s, const RodSpec& rod, size_t k) {
     fail(s, at + "/boundary", "a static solve needs every rod held by at least one clamped or pinned node");
 }
 
+// Rod names the deployment adds (see addDeployment): the coil, its detached
+// copy and the catheter.
+std::vector<std::string> deploymentRodNames(const DeploymentSpec& d) {
+  return {d.coilName, d.coilName + " (detached)", "catheter"};
+}
+
+void checkDeployment(const SceneSpec& s, const DeploymentSpec& d) {
+  const std::string at = "/deployment";
+  if (s.solve != SolveMode::Dynamic)
+    fail(s, at, "a deployment moves in time: it needs \"solve\": \"dynamic\"");
+  checkRestShape(s, d.rest, d.lengthMm, at + "/coil");
+  if (d.initialDeployedMm > d.lengthMm)
+    fail(s, at + "/initial_deployed_mm",
+         "expected at most the coil's length_mm (" + fmt(d.lengthMm) + " mm), got " + fmt(d.initialDeployedMm) + " mm");
+  const CatheterSpec& c = d.catheter;
+  if (!(c.direction.norm() > 1e-12)) fail(s, at + "/catheter/direction", "expected a non-zero vector, got [0, 0, 0]");
+  if (!(c.referenceNormal.norm() > 1e-12))
+    fail(s, at + "/catheter/reference_normal", "expected a non-zero vector, got [0, 0, 0]");
+  // The reference normal is the coil's d1 at the tip: it must be a normal of the exit direction.
+  const double cosine = c.direction.normalized().dot(c.referenceNormal.normalized());
+  if (!(std::abs(cosine) <= 1e-6))
+    fail(s, at + "/catheter/reference_normal",
+         "expected a vector orthogonal to direction; the angle between them is " +
+             fmt(units::radToDeg(std::acos(std::clamp(cosine, -1.0, 1.0)))) + " deg");
+  const std::vector<std::string> names = deploymentRodNames(d);
+  for (size_t k = 0; k < s.rods.size(); ++k)
+    for (const std::string& name : names)
+      if (s.rods[k].name == name)
+        fail(s, rodPath(k) + "/name",
+             "rod name \"" + name + "\" is taken by the deployment (coil \"" + d.coilName +
+                 "\", its detached copy and the catheter); rename one of them");
+}
+
 }  // namespace
 
 long stepCount(double durationS, double timeStepS) {
@@ -74,6 +112,7 @@ void checkScene(const SceneSpec& s) {
         fail(s, rodPath(k) + "/name", "rod name \"" + s.rods[k].name + "\" is already used by " + rodPath(j));
     checkRod(s, s.rods[k], k);
   }
+  if (s.deployment) checkDeployment(s, *s.deployment);
   if (s.solve == SolveMode::Dynamic) {
     const double steps = s.durationS / s.timeStepS;
     if (!(steps <= 1e9))
@@ -81,9 +120,74 @@ void checkScene(const SceneSpec& s) {
   }
 }
 
-ModelDef compileScene(const SceneSpec& s) {
+namespace {
+
+// Rest shape, material and section of a rod or of the deployment's coil, in SI.
+RestCurve compileRest(const SceneSpec& s, const RestShapeSpec& rest, double length, int beams, const std::string& at) {
   using namespace units;
-  ModelDef def;
+  try {
+    switch (rest.type) {
+      case RestShapeSpec::Type::Straight: return makeStraight(length, beams);
+      case RestShapeSpec::Type::Helix:
+        return makeHelix(length, beams, mmToM(rest.loopDiameterMm), mmToM(rest.pitchMm), rest.rightHanded);
+      case RestShapeSpec::Type::Polyline: {
+        std::vector<Vec3> points;
+        for (const Vec3& p : rest.pointsMm) points.push_back(p * kMetresPerMm);
+        return makePolyline(points, length, beams, rest.frames, degPerMmToRadPerM(rest.twistDegPerMm));
+      }
+      case RestShapeSpec::Type::Birdcage:
+        return makeBirdcage(length, beams, mmToM(rest.sphereDiameterMm), degToRad(rest.planeTurnPerLoopDeg));
+    }
+  } catch (const std::exception& ex) {
+    fail(s, at + "/rest_shape", std::string("cannot build the rest shape: ") + ex.what());
+  }
+  fail(s, at + "/rest_shape", "unknown rest shape type");
+}
+
+Material compileMaterial(const MaterialSpec& m) {
+  const double young = units::gpaToPa(m.youngModulusGpa);
+  return {young, shearModulusOf(young, m.poissonRatio), units::gcm3ToKgm3(m.densityGcm3)};
+}
+
+Section compileSection(const SectionSpec& sec, double poissonRatio) {
+  using namespace units;
+  if (sec.circular) return circularSection(mmToM(sec.wireRadiusMm), poissonRatio);
+  Section out;
+  out.area = mm2ToM2(sec.areaMm2);
+  out.iy = out.iz = mm4ToM4(sec.inertiaMm4);
+  out.torsion = mm4ToM4(sec.torsionMm4);
+  out.shearFactor = sec.shearFactor;
+  out.radius = mmToM(sec.outerRadiusMm);
+  return out;
+}
+
+DeploymentDef compileDeployment(const SceneSpec& s, const DeploymentSpec& d) {
+  using namespace units;
+  DeploymentDef def;
+  def.coilName = d.coilName;
+  def.coilLength = mmToM(d.lengthMm);
+  def.coilBeams = d.beams;
+  def.coilRest = compileRest(s, d.rest, def.coilLength, d.beams, "/deployment/coil");
+  def.coilMaterial = compileMaterial(d.material);
+  def.coilSection = compileSection(d.section, d.material.poissonRatio);
+  def.tip.position = d.catheter.tipPositionMm * kMetresPerMm;
+  def.tip.direction = d.catheter.direction;
+  def.tip.normal = d.catheter.referenceNormal;
+  def.catheterOuterRadius = 0.5 * mmToM(d.catheter.outerDiameterMm);
+  def.catheterDrawLength = mmToM(d.catheter.drawLengthMm);
+  def.initialDeployed = mmToM(d.initialDeployedMm);
+  def.initialTwist = degToRad(d.initialTwistDeg);
+  def.maxPushSpeed = mmPerSToMPerS(d.maxPushSpeedMmS);
+  def.maxTwistRate = degPerSToRadPerS(d.maxTwistRateDegS);
+  return def;
+}
+
+}  // namespace
+
+CompiledScene compileSceneWithDeployment(const SceneSpec& s) {
+  using namespace units;
+  CompiledScene out;
+  ModelDef& def = out.model;
   def.gravity = s.gravityMS2;
   def.timeStep = s.solve == SolveMode::Dynamic ? s.timeStepS : 1e-3;  // unused by static solves
   def.newtonIterations = s.newtonIterations;
@@ -110,40 +214,12 @@ ModelDef compileScene(const SceneSpec& s) {
     d.role = r.role;
     d.length = mmToM(r.lengthMm);
     d.beams = r.beams;
-    const RestShapeSpec& rest = r.rest;
-    try {
-      switch (rest.type) {
-        case RestShapeSpec::Type::Straight: d.rest = makeStraight(d.length, d.beams); break;
-        case RestShapeSpec::Type::Helix:
-          d.rest = makeHelix(d.length, d.beams, mmToM(rest.loopDiameterMm), mmToM(rest.pitchMm), rest.rightHanded);
-          break;
-        case RestShapeSpec::Type::Polyline: {
-          std::vector<Vec3> points;
-          for (const Vec3& p : rest.pointsMm) points.push_back(p * kMetresPerMm);
-          d.rest = makePolyline(points, d.length, d.beams, rest.frames, degPerMmToRadPerM(rest.twistDegPerMm));
-          break;
-        }
-        case RestShapeSpec::Type::Birdcage:
-          d.rest = makeBirdcage(d.length, d.beams, mmToM(rest.sphereDiameterMm), degToRad(rest.planeTurnPerLoopDeg));
-          break;
-      }
-    } catch (const std::exception& ex) {
-      fail(s, rodPath(k) + "/rest_shape", std::string("cannot build the rest shape: ") + ex.what());
-    }
+    d.rest = compileRest(s, r.rest, d.length, d.beams, rodPath(k));
     d.placement.position = r.placement.positionMm * kMetresPerMm;
     d.placement.direction = r.placement.direction;
     d.placement.normal = r.placement.normal;
-    const double young = gpaToPa(r.material.youngModulusGpa);
-    d.material = {young, shearModulusOf(young, r.material.poissonRatio), gcm3ToKgm3(r.material.densityGcm3)};
-    if (r.section.circular) {
-      d.section = circularSection(mmToM(r.section.wireRadiusMm), r.material.poissonRatio);
-    } else {
-      d.section.area = mm2ToM2(r.section.areaMm2);
-      d.section.iy = d.section.iz = mm4ToM4(r.section.inertiaMm4);
-      d.section.torsion = mm4ToM4(r.section.torsionMm4);
-      d.section.shearFactor = r.section.shearFactor;
-      d.section.radius = mmToM(r.section.outerRadiusMm);
-    }
+    d.material = compileMaterial(r.material);
+    d.section = compileSection(r.section, r.material.poissonRatio);
     for (const BoundarySpec& b : r.boundary)
       d.constraints.push_back({b.node.resolve(r.beams), b.clamped ? unsigned(kAllDofs) : unsigned(kTranslation),
                                b.velocityMmS * kMetresPerMm, b.angularVelocityDegS * kRadPerDeg});
@@ -151,8 +227,21 @@ ModelDef compileScene(const SceneSpec& s) {
       d.loads.push_back({l.node.resolve(r.beams), l.forceN, l.momentNmm * kMetresPerMm});
     def.rods.push_back(std::move(d));
   }
-  return def;
+  // The deployment's rods come after the scene's, so rod indices of the file hold.
+  if (s.deployment) {
+    const DeploymentDef dd = compileDeployment(s, *s.deployment);
+    try {
+      out.deployment = addDeployment(dd, def);
+    } catch (const std::exception& ex) {
+      fail(s, "/deployment", std::string("cannot build the deployment: ") + ex.what());
+    }
+    out.initialDeployed = dd.initialDeployed;
+    out.initialTwist = dd.initialTwist;
+  }
+  return out;
 }
+
+ModelDef compileScene(const SceneSpec& s) { return compileSceneWithDeployment(s).model; }
 
 StaticOptions staticOptions(const SceneSpec& s) {
   StaticOptions o;

@@ -3,10 +3,12 @@
 // SceneSpec in the file's units (mm, GPa, g/cm3, deg), checked, then compiled
 // into a physics ModelDef in SI. Every error is an InputError naming the
 // file, the JSON path and what was expected.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "io/json_reader.h"
+#include "physics/deployment.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
 
@@ -79,6 +81,28 @@ struct RodSpec {
   std::vector<LoadSpec> loads;
 };
 
+// A coil pushed out of a catheter ("deployment" block). The coil's rest
+// shape runs, as for any rod, from its proximal (pushed) end to the distal tip.
+struct CatheterSpec {
+  Vec3 tipPositionMm = Vec3::Zero();
+  Vec3 direction = Vec3::UnitX();        // exit direction at the tip
+  Vec3 referenceNormal = Vec3::UnitY();  // coil d1 at the tip at zero twist; orthogonal to direction
+  double outerDiameterMm = 0.6;
+  double drawLengthMm = 20;
+};
+
+struct DeploymentSpec {
+  std::string coilName = "coil";
+  double lengthMm = 0;
+  int beams = 0;
+  RestShapeSpec rest;
+  MaterialSpec material;
+  SectionSpec section;
+  CatheterSpec catheter;
+  double initialDeployedMm = 0, initialTwistDeg = 0;
+  double maxPushSpeedMmS = 50, maxTwistRateDegS = 720;
+};
+
 // One effect switched on by the scene; values in the edge unit of each of the
 // effect's ParamSpecs, in their order (defaults where the file gave none).
 struct EffectSpec {
@@ -101,6 +125,7 @@ struct SceneSpec {
   int maxNewtonIterations = 60;
   std::vector<EffectSpec> effects;
   std::vector<RodSpec> rods;
+  std::optional<DeploymentSpec> deployment;  // rods of the deployment come after `rods`
   std::vector<std::string> warnings;  // harmless oddities found while reading (unused keys...)
 };
 
@@ -113,8 +138,22 @@ SceneSpec parseScene(const nlohmann::json& document, const std::string& file);
 // names, what a static solve needs. Throws InputError naming the JSON path.
 void checkScene(const SceneSpec& spec);
 
+// A compiled scene: the physics definition, and the constants of its
+// deployment when it has one (its rods are appended to `model` after the
+// scene's rods by addDeployment), with the initial deployed length and twist.
+struct CompiledScene {
+  ModelDef model;
+  std::optional<Deployment> deployment;
+  double initialDeployed = 0;  // m
+  double initialTwist = 0;     // rad
+};
+
 // Converts to SI and builds the physics definition. Expects a checked spec;
-// throws InputError if the rest shape cannot be built.
+// throws InputError naming the JSON path if a rest shape or the deployment
+// cannot be built.
+CompiledScene compileSceneWithDeployment(const SceneSpec& spec);
+// The same, keeping the model definition only (the deployment's rods are in
+// it, but not its constants: a run that drives a deployment needs the above).
 ModelDef compileScene(const SceneSpec& spec);
 
 // Static solver settings of the scene.

@@ -141,6 +141,44 @@ RodSpec readRod(const JsonNode& n) {
   return r;
 }
 
+// The coil of a deployment: a rod's name, length, beams, rest shape,
+// material and section, read by the same sub-readers as rods.
+void readCoil(const JsonNode& n, DeploymentSpec& d) {
+  n.allowKeys({"name", "length_mm", "beams", "rest_shape", "material", "section"});
+  if (auto name = n.optional("name")) d.coilName = name->string();
+  d.lengthMm = n.child("length_mm").number(kPositive);
+  d.beams = int(n.child("beams").integer(2, 100'000));
+  d.rest = readRestShape(n.child("rest_shape"));
+  d.material = readMaterial(n.child("material"));
+  d.section = readSection(n.child("section"));
+}
+
+CatheterSpec readCatheter(const JsonNode& n) {
+  n.allowKeys({"type", "tip_position_mm", "direction", "reference_normal", "outer_diameter_mm", "draw_length_mm"});
+  CatheterSpec c;
+  // Only a rigid straight catheter exists in the physics so far.
+  n.child("type").oneOf({"rigid"});
+  c.tipPositionMm = toVec3(n.child("tip_position_mm").vec3(kAny));
+  c.direction = toVec3(n.child("direction").vec3(kAny));
+  c.referenceNormal = toVec3(n.child("reference_normal").vec3(kAny));
+  if (auto d = n.optional("outer_diameter_mm")) c.outerDiameterMm = d->number(kPositive);
+  if (auto l = n.optional("draw_length_mm")) c.drawLengthMm = l->number(kPositive);
+  return c;
+}
+
+DeploymentSpec readDeployment(const JsonNode& n) {
+  n.allowKeys({"coil", "catheter", "initial_deployed_mm", "initial_twist_deg", "max_push_speed_mm_s",
+               "max_twist_rate_deg_s"});
+  DeploymentSpec d;
+  readCoil(n.child("coil"), d);
+  d.catheter = readCatheter(n.child("catheter"));
+  if (auto l = n.optional("initial_deployed_mm")) d.initialDeployedMm = l->number(kNonNegative);
+  if (auto t = n.optional("initial_twist_deg")) d.initialTwistDeg = t->number(kAny);
+  if (auto v = n.optional("max_push_speed_mm_s")) d.maxPushSpeedMmS = v->number(kPositive);
+  if (auto w = n.optional("max_twist_rate_deg_s")) d.maxTwistRateDegS = w->number(kPositive);
+  return d;
+}
+
 // Parameter keys, bounds and defaults come from each Effect's ParamSpecs.
 EffectSpec readEffect(const JsonNode& n, const std::string& name) {
   const Effect* effect = EffectRegistry::global().find(name);
@@ -170,7 +208,7 @@ SceneSpec parseScene(const nlohmann::json& document, const std::string& file) {
   const JsonNode root(document, file);
   if (!root.isObject()) root.expected("a JSON object (a coilsim scene)");
   root.allowKeys({"format", "name", "description", "gravity_m_s2", "solve", "time_step_s", "duration_s",
-                  "newton_iterations", "damping", "load_steps", "max_newton_iterations", "effects", "rods"});
+                  "newton_iterations", "damping", "load_steps", "max_newton_iterations", "effects", "rods", "deployment"});
   root.child("format").oneOf({kSceneFormat});
   SceneSpec s;
   s.file = file;
@@ -206,8 +244,17 @@ SceneSpec parseScene(const nlohmann::json& document, const std::string& file) {
     if (!effects->isObject()) effects->expected("an object {\"effect name\": {parameters}}");
     for (const std::string& name : effects->keys()) s.effects.push_back(readEffect(effects->child(name), name));
   }
-  for (const JsonNode& rod : root.child("rods").items(1, SIZE_MAX, "an array of at least one rod"))
-    s.rods.push_back(readRod(rod));
+  // A scene needs something to simulate: rods, a deployment, or both.
+  const bool deployment = root.has("deployment");
+  if (deployment || root.has("rods")) {
+    if (auto rods = root.optional("rods"))
+      for (const JsonNode& rod : rods->items(deployment ? 0 : 1, SIZE_MAX,
+                                             deployment ? "an array of rods" : "an array of at least one rod"))
+        s.rods.push_back(readRod(rod));
+  } else {
+    root.child("rods").expected("an array of at least one rod (or a \"deployment\" block)");
+  }
+  if (deployment) s.deployment = readDeployment(root.child("deployment"));
   return s;
 }
 

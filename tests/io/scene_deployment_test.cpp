@@ -1,0 +1,175 @@
+// The "deployment" block of scene files: read with the rods' own sub-readers,
+// checked (every bad input named by its JSON path), compiled to SI and to
+// the rods addDeployment appends.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "io/expect_error.h"
+#include "io/scene.h"
+#include "physics/model.h"
+
+namespace coilsim::io {
+namespace {
+
+// A deployment-only scene; tests change one thing each.
+constexpr const char* kScene = R"({
+  "format": "coilsim-scene/1",
+  "gravity_m_s2": [0, 0, -9.81],
+  "solve": "dynamic",
+  "time_step_s": 0.001,
+  "duration_s": 0.01,
+  "deployment": {
+    "coil": {
+      "name": "coil",
+      "length_mm": 30,
+      "beams": 30,
+      "rest_shape": {"type": "helix", "loop_diameter_mm": 7, "pitch_mm": 0.96, "handedness": "right"},
+      "material": {"young_modulus_gpa": 7.5, "poisson_ratio": 0.39, "density_g_cm3": 21.45},
+      "section": {"wire_radius_mm": 0.1}
+    },
+    "catheter": {"type": "rigid", "tip_position_mm": [1, 2, 3], "direction": [0, 2, 0], "reference_normal": [0, 0, 1],
+                 "outer_diameter_mm": 0.6, "draw_length_mm": 20},
+    "initial_deployed_mm": 5,
+    "initial_twist_deg": 90,
+    "max_push_speed_mm_s": 20
+  }
+})";
+
+nlohmann::json base() { return nlohmann::json::parse(kScene); }
+
+SceneSpec parse(const nlohmann::json& doc) { return sceneFromText(doc.dump(2), "d.json"); }
+
+std::string errorOfDoc(const nlohmann::json& doc) {
+  return errorOf([&] { (void)parse(doc); });
+}
+
+// The error for kScene with the value at `pointer` replaced (or removed if `remove`).
+std::string errorWith(const std::string& pointer, const nlohmann::json& value, bool remove = false) {
+  nlohmann::json doc = base();
+  const nlohmann::json::json_pointer p(pointer);
+  if (remove) doc.at(p.parent_pointer()).erase(p.back());
+  else doc[p] = value;
+  return errorOfDoc(doc);
+}
+
+TEST(SceneDeployment, ParsesWithoutRods) {
+  const SceneSpec s = parse(base());
+  EXPECT_TRUE(s.rods.empty());
+  ASSERT_TRUE(s.deployment.has_value());
+  const DeploymentSpec& d = *s.deployment;
+  EXPECT_EQ(d.coilName, "coil");
+  EXPECT_EQ(d.beams, 30);
+  EXPECT_EQ(d.rest.type, RestShapeSpec::Type::Helix);
+  EXPECT_DOUBLE_EQ(d.material.youngModulusGpa, 7.5);
+  EXPECT_DOUBLE_EQ(d.section.wireRadiusMm, 0.1);
+  EXPECT_EQ(d.catheter.direction, Vec3(0, 2, 0));
+  EXPECT_DOUBLE_EQ(d.maxTwistRateDegS, 720);  // default
+  EXPECT_TRUE(s.warnings.empty());
+}
+
+TEST(SceneDeployment, CompilesToSiAndAppendsItsRodsAfterTheScenesRods) {
+  nlohmann::json doc = base();
+  doc["rods"] = nlohmann::json::parse(R"([{"name": "wire", "length_mm": 10, "beams": 2, "rest_shape": {"type": "straight"},
+    "material": {"young_modulus_gpa": 200, "poisson_ratio": 0.3, "density_g_cm3": 7.85},
+    "section": {"wire_radius_mm": 0.2}, "boundary": [{"node": 0, "type": "clamped"}]}])");
+  const CompiledScene c = compileSceneWithDeployment(parse(doc));
+  ASSERT_TRUE(c.deployment.has_value());
+  const Deployment& dep = *c.deployment;
+  ASSERT_EQ(c.model.rods.size(), 4u);  // wire, then chain, detached coil, catheter
+  EXPECT_EQ(c.model.rods[0].name, "wire");
+  EXPECT_EQ(dep.chainRod, 1);
+  EXPECT_EQ(c.model.rods[1].name, "coil");
+  EXPECT_DOUBLE_EQ(dep.coilLength, 0.03);
+  EXPECT_EQ(dep.coilBeams, 30);
+  EXPECT_DOUBLE_EQ(dep.material.youngModulus, 7.5e9);
+  EXPECT_DOUBLE_EQ(dep.material.density, 21450);
+  EXPECT_DOUBLE_EQ(dep.section.radius, 1e-4);
+  EXPECT_TRUE(dep.tip.position.isApprox(Vec3(1e-3, 2e-3, 3e-3)));
+  EXPECT_DOUBLE_EQ(dep.maxPushSpeed, 0.02);
+  EXPECT_NEAR(dep.maxTwistRate, 4 * M_PI, 1e-12);
+  EXPECT_DOUBLE_EQ(c.initialDeployed, 5e-3);
+  EXPECT_NEAR(c.initialTwist, M_PI / 2, 1e-15);
+  // The coil's rest shape is the rods' helix, from the proximal end.
+  ASSERT_EQ(dep.restX.size(), 31u);
+  EXPECT_NEAR(dep.restX.front().norm(), 0, 1e-15);
+  // The drawn catheter: outer diameter 0.6 mm.
+  EXPECT_DOUBLE_EQ(c.model.rods[dep.catheterRod].section.radius, 0.3e-3);
+  // The plain compile keeps the same rods, and the model builds.
+  EXPECT_EQ(compileScene(parse(doc)).rods.size(), 4u);
+  EXPECT_NO_THROW((void)compileModel(c.model));
+}
+
+TEST(SceneDeployment, CoilReusesTheRodReadersAndTheirMessages) {
+  EXPECT_CONTAINS(errorWith("/deployment/coil/rest_shape/type", "spiral"),
+                  "d.json: /deployment/coil/rest_shape/type: expected one of \"straight\", \"helix\"");
+  EXPECT_CONTAINS(errorWith("/deployment/coil/material/young_modulus", 7.5),
+                  "/deployment/coil/material/young_modulus: unknown key (did you mean \"young_modulus_gpa\"?)");
+  EXPECT_CONTAINS(errorWith("/deployment/coil/section", nlohmann::json::object()), "/deployment/coil/section: expected");
+  EXPECT_CONTAINS(errorWith("/deployment/coil/beams", 1), "/deployment/coil/beams: expected an integer in [2, 100000], got 1");
+  EXPECT_CONTAINS(errorWith("/deployment/coil/length_mm", -30), "/deployment/coil/length_mm: expected a finite number > 0");
+  EXPECT_CONTAINS(errorWith("/deployment/coil/length_mm", nullptr, true), "/deployment/coil/length_mm: missing");
+  EXPECT_CONTAINS(errorWith("/deployment/coil/boundary", nlohmann::json::array()),
+                  "/deployment/coil/boundary: unknown key; allowed here: name, length_mm");
+  nlohmann::json doc = base();
+  doc["deployment"]["coil"]["rest_shape"] = {{"type", "polyline"}, {"points_mm", {{0, 0, 0}, {10, 0, 0}}}};
+  EXPECT_CONTAINS(errorOfDoc(doc),
+                  "/deployment/coil/rest_shape/points_mm: the polyline is 10 mm long but length_mm is 30 mm");
+}
+
+TEST(SceneDeployment, CatheterErrorsNameTheirPath) {
+  EXPECT_CONTAINS(errorWith("/deployment/catheter/reference_normal", {0, 1, 1}),
+                  "d.json: /deployment/catheter/reference_normal: expected a vector orthogonal to direction; the angle "
+                  "between them is 45 deg");
+  EXPECT_CONTAINS(errorWith("/deployment/catheter/reference_normal", {0, 0, 0}),
+                  "/deployment/catheter/reference_normal: expected a non-zero vector");
+  EXPECT_CONTAINS(errorWith("/deployment/catheter/direction", {0, 0, 0}),
+                  "/deployment/catheter/direction: expected a non-zero vector");
+  EXPECT_CONTAINS(errorWith("/deployment/catheter/type", "shaped"),
+                  "/deployment/catheter/type: expected \"rigid\", got \"shaped\"");
+  EXPECT_CONTAINS(errorWith("/deployment/catheter/type", nullptr, true), "/deployment/catheter/type: missing");
+  EXPECT_CONTAINS(errorWith("/deployment/catheter/tip_position_mm", {0, 1}),
+                  "/deployment/catheter/tip_position_mm: expected [x, y, z]");
+  EXPECT_CONTAINS(errorWith("/deployment/catheter/outer_diameter_mm", 0),
+                  "/deployment/catheter/outer_diameter_mm: expected a finite number > 0, got 0");
+  EXPECT_CONTAINS(errorWith("/deployment/catheter/tip", 1), "/deployment/catheter/tip: unknown key");
+  EXPECT_CONTAINS(errorWith("/deployment/catheter", nullptr, true), "/deployment/catheter: missing");
+}
+
+TEST(SceneDeployment, LimitsAndNumbersAreChecked) {
+  EXPECT_CONTAINS(errorWith("/deployment/initial_deployed_mm", 31),
+                  "d.json: /deployment/initial_deployed_mm: expected at most the coil's length_mm (30 mm), got 31 mm");
+  EXPECT_CONTAINS(errorWith("/deployment/initial_deployed_mm", -1),
+                  "/deployment/initial_deployed_mm: expected a finite number >= 0, got -1");
+  EXPECT_CONTAINS(errorWith("/deployment/max_push_speed_mm_s", 0),
+                  "/deployment/max_push_speed_mm_s: expected a finite number > 0");
+  EXPECT_CONTAINS(errorWith("/deployment/initial_twist_deg", "90"), "/deployment/initial_twist_deg: expected a finite number");
+  EXPECT_CONTAINS(errorWith("/deployment/initial_deployed", 3),
+                  "/deployment/initial_deployed: unknown key (did you mean \"initial_deployed_mm\"?)");
+  // Beyond the range of a double: caught while parsing, with the path.
+  std::string text = base().dump();
+  text.replace(text.find("\"initial_twist_deg\":90"), 22, "\"initial_twist_deg\":1e999");
+  EXPECT_CONTAINS(errorOf([&] { (void)sceneFromText(text, "d.json"); }),
+                  "/deployment/initial_twist_deg: expected a finite number, got 1e999");
+}
+
+TEST(SceneDeployment, SceneLevelChecks) {
+  nlohmann::json doc = base();
+  doc["solve"] = "static";
+  EXPECT_CONTAINS(errorOfDoc(doc), "d.json: /deployment: a deployment moves in time: it needs \"solve\": \"dynamic\"");
+  // Neither rods nor a deployment: nothing to simulate.
+  doc = base();
+  doc.erase("deployment");
+  EXPECT_CONTAINS(errorOfDoc(doc), "/rods: missing; expected an array of at least one rod (or a \"deployment\" block)");
+  // Rod names the deployment takes.
+  doc = base();
+  doc["rods"] = nlohmann::json::parse(R"([{"name": "catheter", "length_mm": 10, "beams": 2,
+    "rest_shape": {"type": "straight"}, "material": {"young_modulus_gpa": 200, "poisson_ratio": 0.3,
+    "density_g_cm3": 7.85}, "section": {"wire_radius_mm": 0.2}}])");
+  EXPECT_CONTAINS(errorOfDoc(doc), "/rods/0/name: rod name \"catheter\" is taken by the deployment");
+  EXPECT_CONTAINS(errorWith("/deployment", 5), "/deployment: expected an object");
+}
+
+}  // namespace
+}  // namespace coilsim::io
