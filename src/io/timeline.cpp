@@ -1,0 +1,123 @@
+// Timeline file -> TimedCommands in SI; units convert only through units.h.
+#include "io/timeline.h"
+
+#include <cstdint>
+#include <cstdio>
+
+#include "io/json_reader.h"
+#include "io/units.h"
+
+namespace coilsim::io {
+namespace {
+
+using Kind = DeviceCommand::Kind;
+
+constexpr std::string_view kKinds[] = {"push", "pull", "twist", "stop", "detach", "retract"};
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// push, pull, retract: {"speed_mm_s" > 0, "distance_mm" > 0 (optional: until stopped or a limit)}.
+DeviceCommand readLinear(const JsonNode& n, Kind kind) {
+  n.allowKeys({"speed_mm_s", "distance_mm"});
+  DeviceCommand c;
+  c.kind = kind;
+  c.rate = units::mmPerSToMPerS(n.child("speed_mm_s").number(Bounds::positive()));
+  if (auto d = n.optional("distance_mm")) c.amount = units::mmToM(d->number(Bounds::positive()));
+  return c;
+}
+
+// twist: {"rate_deg_s" != 0 (its sign turns right- or left-handed about the
+// exit direction), "angle_deg" > 0 (optional: until stopped)}.
+DeviceCommand readTwist(const JsonNode& n) {
+  n.allowKeys({"rate_deg_s", "angle_deg"});
+  DeviceCommand c;
+  c.kind = Kind::Twist;
+  const JsonNode rate = n.child("rate_deg_s");
+  const double r = rate.number(Bounds::any());
+  if (r == 0) rate.expected("a finite non-zero number (deg/s; negative turns left-handed)");
+  c.rate = units::degPerSToRadPerS(r);
+  if (auto a = n.optional("angle_deg")) c.amount = units::degToRad(a->number(Bounds::positive()));
+  return c;
+}
+
+TimedCommand readCommand(const JsonNode& n) {
+  if (!n.isObject()) n.expected("a command object {\"t_s\": ..., \"push\" | \"pull\" | ...: {...}}");
+  std::vector<std::string_view> allowed{"t_s"};
+  allowed.insert(allowed.end(), std::begin(kKinds), std::end(kKinds));
+  n.allowKeys(allowed);
+  TimedCommand t;
+  t.time = n.child("t_s").number(Bounds::nonNegative());
+  std::string_view kind;
+  for (std::string_view k : kKinds) {
+    if (!n.has(k)) continue;
+    if (!kind.empty())
+      n.fail("a command has exactly one of push, pull, twist, stop, detach, retract; got \"" + std::string(kind) +
+             "\" and \"" + std::string(k) + "\"");
+    kind = k;
+  }
+  if (kind.empty()) n.fail("a command needs one of push, pull, twist, stop, detach, retract");
+  const JsonNode body = n.child(kind);
+  if (!body.isObject()) body.expected("an object");
+  if (kind == "push") t.command = readLinear(body, Kind::Push);
+  else if (kind == "pull") t.command = readLinear(body, Kind::Pull);
+  else if (kind == "retract") t.command = readLinear(body, Kind::Retract);
+  else if (kind == "twist") t.command = readTwist(body);
+  else {
+    body.allowKeys(std::span<const std::string_view>());
+    t.command.kind = kind == "stop" ? Kind::Stop : Kind::Detach;
+  }
+  return t;
+}
+
+}  // namespace
+
+std::vector<TimedCommand> parseTimeline(const nlohmann::json& document, const std::string& file) {
+  const JsonNode root(document, file);
+  if (!root.isObject()) root.expected("a JSON object (a coilsim timeline)");
+  root.allowKeys({"format", "name", "description", "commands"});
+  root.child("format").oneOf({kTimelineFormat});
+  if (auto n = root.optional("name")) (void)n->string();
+  if (auto d = root.optional("description")) (void)d->string(true);
+  std::vector<TimedCommand> out;
+  for (const JsonNode& item : root.child("commands").items(0, SIZE_MAX, "an array of commands")) {
+    out.push_back(readCommand(item));
+    // Commands run in file order; a time going back would silently reorder them.
+    if (out.size() > 1 && out.back().time < out[out.size() - 2].time)
+      item.child("t_s").fail("expected a time >= the previous command's (" + fmt(out[out.size() - 2].time) +
+                             " s): commands are listed in time order, got " + fmt(out.back().time) + " s");
+  }
+  return out;
+}
+
+std::vector<TimedCommand> loadTimeline(const std::string& path) { return parseTimeline(readJsonFile(path), path); }
+
+std::vector<TimedCommand> timelineFromText(std::string_view text, const std::string& label) {
+  return parseTimeline(parseJson(text, label), label);
+}
+
+std::string describeCommand(const DeviceCommand& c) {
+  const auto linear = [&](const char* verb) {
+    std::string s = std::string(verb) + " at " + fmt(units::mToMm(c.rate)) + " mm/s";
+    if (c.amount > 0) s += " by " + fmt(units::mToMm(c.amount)) + " mm";
+    return s;
+  };
+  switch (c.kind) {
+    case Kind::Push: return linear("push");
+    case Kind::Pull: return linear("pull");
+    case Kind::Retract: return linear("retract");
+    case Kind::Twist: {
+      std::string s = "twist at " + fmt(units::radToDeg(c.rate)) + " deg/s";
+      if (c.amount > 0) s += " by " + fmt(units::radToDeg(c.amount)) + " deg";
+      return s;
+    }
+    case Kind::Stop: return "stop";
+    case Kind::Detach: return "detach";
+  }
+  return "?";
+}
+
+}  // namespace coilsim::io
