@@ -1,9 +1,42 @@
 #include "io/result.h"
 
+#include <cstdint>
+#include <cstdio>
+#include <algorithm>
+
 #include "io/json_writer.h"
 #include "io/units.h"
 
 namespace coilsim::io {
+
+namespace {
+
+// FNV-1a, 64-bit (Fowler, Noll, Vo): offset basis and prime.
+constexpr uint64_t kFnvOffset = 14695981039346656037ull;
+constexpr uint64_t kFnvPrime = 1099511628211ull;
+
+template <class T>
+void hashBytes(uint64_t& h, const std::vector<T>& values) {
+  const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
+  for (size_t i = 0; i < values.size() * sizeof(T); ++i) h = (h ^ bytes[i]) * kFnvPrime;
+}
+
+}  // namespace
+
+std::string stateHash(const State& state) {
+  // Eigen's fixed-size vectors and quaternions hold their doubles contiguously, no padding.
+  static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(Quat) == 4 * sizeof(double));
+  uint64_t h = kFnvOffset;
+  for (const RodState& r : state.rods) {
+    hashBytes(h, r.x);
+    hashBytes(h, r.q);
+    hashBytes(h, r.v);
+    hashBytes(h, r.w);
+  }
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
 
 nlohmann::ordered_json resultJson(const Model& model, const State& state, const RunRecord& run) {
   using nlohmann::ordered_json;
@@ -16,19 +49,35 @@ nlohmann::ordered_json resultJson(const Model& model, const State& state, const 
   if (!run.error.empty()) out["error"] = run.error;
   out["time_s"] = state.time;
   out["steps"] = state.stats.steps;
+  out["state_hash"] = stateHash(state);
   ordered_json rods = ordered_json::array();
   for (size_t k = 0; k < model.rods.size(); ++k) {
     const RodState& r = state.rods[k];
+    // Only the active nodes are the rod as it is now (a deployment's coil
+    // grows node by node out of the catheter); a rod not active has none.
+    const size_t n = r.active ? std::min(size_t(r.activeNodes), r.x.size()) : 0;
     ordered_json nodes = ordered_json::array(), rotations = ordered_json::array();
-    for (const Vec3& x : r.x) nodes.push_back({units::mToMm(x.x()), units::mToMm(x.y()), units::mToMm(x.z())});
-    for (const Quat& q : r.q) rotations.push_back({q.w(), q.x(), q.y(), q.z()});
+    for (size_t i = 0; i < n; ++i) {
+      const Vec3& x = r.x[i];
+      const Quat& q = r.q[i];
+      nodes.push_back({units::mToMm(x.x()), units::mToMm(x.y()), units::mToMm(x.z())});
+      rotations.push_back({q.w(), q.x(), q.y(), q.z()});
+    }
     ordered_json rod;
     rod["name"] = model.rods[k].name;
+    if (!r.active) rod["active"] = false;
     rod["nodes_mm"] = std::move(nodes);
     rod["rotations"] = std::move(rotations);
     rods.push_back(std::move(rod));
   }
   out["rods"] = std::move(rods);
+  if (run.deployment) {
+    const DeploymentState& d = *run.deployment;
+    out["deployment"] = {{"deployed_mm", units::mToMm(d.deployed)},
+                         {"twist_deg", units::radToDeg(d.twist)},
+                         {"detached", d.detached},
+                         {"tip_offset_mm", units::mToMm(d.tipOffset)}};
+  }
   const Energy e = computeEnergy(model, state);
   out["energy"] = {{"kinetic_J", e.kinetic}, {"elastic_J", e.elastic}, {"potential_J", e.potential},
                    {"total_J", e.total()}};

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/scene.h"
+#include "physics/deployment.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
 #include "physics/state.h"
@@ -24,11 +25,18 @@ struct RunRecord {
   std::string status = "ok";  // "ok", "step_refused" or "not_converged"
   std::string error;          // why, when status is not "ok"
   std::optional<StaticReport> statics;  // static solves only
-  std::vector<std::string> warnings;    // scene warnings; the state's are added
+  std::vector<std::string> warnings;    // scene warnings and refused commands; the state's are added
+  std::optional<DeploymentState> deployment;  // scenes with a deployment
 };
 
-// The result document: format, scene, status, time_s, steps, rods (nodes_mm,
-// rotations w x y z), energy (J), stats, static (when static), warnings.
+// FNV-1a 64-bit over the raw bytes of every rod's x, q, v, w (all nodes, rod
+// by rod), as 16 hex digits: equal hashes mean a bit-for-bit equal state.
+std::string stateHash(const State& state);
+
+// The result document: format, scene, status, time_s, steps, state_hash,
+// rods (nodes_mm, rotations w x y z of the active nodes; "active": false for
+// a rod not simulated now), deployment (when there is one), energy (J),
+// stats, static (when static), warnings.
 nlohmann::ordered_json resultJson(const Model& model, const State& state, const RunRecord& run);
 
 // resultJson, formatted, written atomically to `path`. Throws

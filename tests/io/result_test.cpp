@@ -80,6 +80,49 @@ TEST(Result, StaticRunsReportTheSolver) {
   EXPECT_EQ(j["static"]["iterations"], 9);
 }
 
+TEST(Result, StateHashSeesEveryBitAndOnlyTheState) {
+  const Model m = smallModel();
+  State a = makeState(m), b = makeState(m);
+  EXPECT_EQ(stateHash(a), stateHash(b));
+  EXPECT_EQ(stateHash(a).size(), 16u);
+  b.time = 5;  // not part of the hash: poses and velocities are
+  EXPECT_EQ(stateHash(a), stateHash(b));
+  for (int field = 0; field < 4; ++field) {
+    State c = makeState(m);
+    // The smallest change a double can make, in each array.
+    double& v = field == 0 ? c.rods[0].x[1].y() : field == 1 ? c.rods[0].q[1].x() : field == 2 ? c.rods[0].v[2].z() : c.rods[0].w[0].x();
+    v = std::nextafter(v, 1.0);
+    EXPECT_NE(stateHash(a), stateHash(c)) << "field " << field;
+  }
+  // FNV-1a 64 of no bytes is its offset basis.
+  EXPECT_EQ(stateHash(State{}), "cbf29ce484222325");
+  EXPECT_EQ(resultJson(m, a, RunRecord{})["state_hash"], stateHash(a));
+}
+
+TEST(Result, ListsActiveNodesAndTheDeployment) {
+  const Model m = smallModel();
+  State s = makeState(m);
+  s.rods[0].activeNodes = 2;
+  RunRecord run;
+  run.deployment = DeploymentState{};
+  run.deployment->deployed = 0.0125;
+  run.deployment->twist = M_PI / 2;
+  run.deployment->tipOffset = 0.001;
+  const nlohmann::ordered_json j = resultJson(m, s, run);
+  EXPECT_EQ(j["rods"][0]["nodes_mm"].size(), 2u);
+  EXPECT_EQ(j["rods"][0]["rotations"].size(), 2u);
+  EXPECT_FALSE(j["rods"][0].contains("active"));
+  EXPECT_DOUBLE_EQ(j["deployment"]["deployed_mm"].get<double>(), 12.5);
+  EXPECT_DOUBLE_EQ(j["deployment"]["twist_deg"].get<double>(), 90.0);
+  EXPECT_EQ(j["deployment"]["detached"], false);
+  EXPECT_DOUBLE_EQ(j["deployment"]["tip_offset_mm"].get<double>(), 1.0);
+  s.rods[0].active = false;
+  const nlohmann::ordered_json k = resultJson(m, s, RunRecord{});
+  EXPECT_EQ(k["rods"][0]["active"], false);
+  EXPECT_TRUE(k["rods"][0]["nodes_mm"].empty());
+  EXPECT_FALSE(k.contains("deployment"));
+}
+
 TEST(Result, IsWrittenAtomicallyAndReadsBack) {
   const fs::path dir = freshDir("atomic");
   const fs::path file = dir / "result.json";
