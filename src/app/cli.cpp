@@ -36,6 +36,8 @@ void printUsage(std::FILE* to) {
       "run options:\n"
       "  --headless          run off-screen: print a summary, no window\n"
       "  --out FILE          write the final state as JSON (coilsim-result/1, atomically)\n"
+      "  --input TIMELINE    drive the scene's coil deployment by timed commands (coilsim-timeline/1:\n"
+      "                      push, pull, twist, stop, detach, retract; see timelines/*.json)\n"
       "  --duration S        simulated seconds, instead of the scene's duration_s (dynamic scenes)\n"
       "  --steps N           number of time steps instead (dynamic scenes)\n",
       to);
@@ -51,8 +53,9 @@ void printUsage(std::FILE* to) {
       "\n"
       "Without --headless, a window opens if there is a display; otherwise the scene\n"
       "runs off-screen as with --headless.\n"
-      "exit codes: 0 ok, 1 simulation failed (step refused, static solve not converged)\n"
-      "            or rendering failed, 2 bad command line or input file\n"
+      "exit codes: 0 ok (refused timeline commands are reported, not failures), 1 simulation\n"
+      "            failed (step refused, static solve not converged) or rendering failed,\n"
+      "            2 bad command line or input file (scene or timeline)\n"
       "\n"
       "effects a scene can switch on under \"effects\" (parameters: unit, default, range):\n",
       to);
@@ -81,7 +84,7 @@ bool parseLong(std::string_view s, long& out) {
 
 bool isRunOption(const std::string& arg) {
   const std::string name = arg.substr(0, arg.find('='));
-  for (const char* o : {"--headless", "--out", "--duration", "--steps", "--screenshot", "--view", "--size"})
+  for (const char* o : {"--headless", "--out", "--input", "--duration", "--steps", "--screenshot", "--view", "--size"})
     if (name == o) return true;
   return false;
 }
@@ -111,6 +114,9 @@ bool parseRunArgs(const std::vector<std::string>& args, app::RunOptions& o) {
     } else if (arg == "--out") {
       if (!next() || value.empty()) return fail("--out needs a file name");
       o.out = value;
+    } else if (arg == "--input") {
+      if (!next() || value.empty()) return fail("--input needs a timeline file, e.g. timelines/push-helix.json");
+      o.input = value;
     } else if (arg == "--duration") {
       double d = 0;
       if (!next() || !parseDouble(value, d) || !(d > 0))

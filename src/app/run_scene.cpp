@@ -8,7 +8,10 @@
 
 #include "io/result.h"
 #include "io/scene.h"
+#include "io/timeline.h"
 #include "io/units.h"
+#include "physics/controller.h"
+#include "physics/deployment.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
 #include "physics/state.h"
@@ -73,6 +76,16 @@ struct Outcome {
   std::string summary;  // one line, without the scene name
 };
 
+std::string stepSummary(const Model& model, const State& state, long done, long steps, double seconds) {
+  const StepStats& st = state.stats;
+  const double meanUs = st.steps ? 1e6 * st.totalStepSeconds / double(st.steps) : 0.0;
+  const Energy e = computeEnergy(model, state);
+  return "dynamic, " + std::to_string(done) + " of " + std::to_string(steps) + " steps of " +
+         fmt("%.4g", model.timeStep * 1e3) + " ms to t = " + fmt("%.6g", state.time) + " s in " + fmt("%.3g", seconds) +
+         " s (step mean " + fmt("%.3g", meanUs) + " us, max " + fmt("%.3g", 1e6 * st.maxStepSeconds) +
+         " us); energy " + fmt("%.4g", e.total()) + " J (kinetic " + fmt("%.3g", e.kinetic) + " J)";
+}
+
 Outcome simulateDynamic(const Model& model, State& state, long steps, io::RunRecord& record) {
   Progress progress(steps);
   StepReport report;
@@ -82,18 +95,72 @@ Outcome simulateDynamic(const Model& model, State& state, long steps, io::RunRec
     if (!report.ok()) break;
     progress.update(done + 1, state.time);
   }
-  const StepStats& st = state.stats;
-  const double meanUs = st.steps ? 1e6 * st.totalStepSeconds / double(st.steps) : 0.0;
-  const Energy e = computeEnergy(model, state);
-  std::string line = "dynamic, " + std::to_string(done) + " of " + std::to_string(steps) + " steps of " +
-                     fmt("%.4g", model.timeStep * 1e3) + " ms to t = " + fmt("%.6g", state.time) + " s in " +
-                     fmt("%.3g", progress.seconds()) + " s (step mean " + fmt("%.3g", meanUs) + " us, max " +
-                     fmt("%.3g", 1e6 * st.maxStepSeconds) + " us); energy " + fmt("%.4g", e.total()) +
-                     " J (kinetic " + fmt("%.3g", e.kinetic) + " J)" + tips(model, state);
+  const std::string line = stepSummary(model, state, done, steps, progress.seconds()) + tips(model, state);
   if (report.ok()) return {true, line};
   record.status = "step_refused";
   record.error = "step " + std::to_string(done + 1) + " refused at t = " + fmt("%.6g", state.time) +
                  " s: " + report.message;
+  return {false, line};
+}
+
+// runTimeline reports a refused command as "t = <its time> s: refused: why";
+// this names the command too: "/commands/3 (push at 50 mm/s by 40 mm) at
+// t = 2 s: refused: why". An entry it cannot match stays as it is.
+std::string nameCommand(const std::string& entry, const std::vector<TimedCommand>& timeline, size_t& cursor) {
+  for (size_t i = cursor; i < timeline.size(); ++i) {
+    const std::string prefix = "t = " + std::to_string(timeline[i].time) + " s: ";
+    if (entry.rfind(prefix, 0) != 0) continue;
+    cursor = i + 1;
+    return "/commands/" + std::to_string(i) + " (" + io::describeCommand(timeline[i].command) + ") at t = " +
+           fmt("%g", timeline[i].time) + " s: " + entry.substr(prefix.size());
+  }
+  return entry;
+}
+
+// The scene's deployment driven by the timeline (possibly empty) for `steps`
+// steps. Refused commands are printed and become warnings, not failures; a
+// refused step fails the run.
+Outcome simulateDeployment(const Deployment& dep, const Model& model, State& state, DeploymentState& ds,
+                           const std::vector<TimedCommand>& timeline, const std::string& timelineFile, long steps,
+                           io::RunRecord& record) {
+  const double duration = double(steps) * model.timeStep;
+  // runTimeline starts a command at the first step that begins at or after its time.
+  const double lastStart = double(steps - 1) * model.timeStep;
+  for (size_t i = 0; i < timeline.size(); ++i)
+    if (timeline[i].time > lastStart + 1e-9 * model.timeStep) {
+      const std::string w = timelineFile + ": /commands/" + std::to_string(i) + "/t_s: " +
+                            fmt("%g", timeline[i].time) + " s is not before the end of the run (" +
+                            fmt("%g", duration) + " s): not run";
+      std::fprintf(stderr, "coilsim: warning: %s\n", w.c_str());
+      record.warnings.push_back(w);
+    }
+  const auto start = Clock::now();
+  DeploymentController controller;
+  TimelineRun run = runTimeline(dep, model, state, ds, controller, timeline, duration);
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  // The last entry of a failed run says which step was refused; the others
+  // are refused commands and limits reached on the way.
+  std::string stepError;
+  if (!run.ok && !run.log.empty()) stepError = run.log.back(), run.log.pop_back();
+  const std::string source = timelineFile.empty() ? std::string("deployment") : timelineFile;
+  size_t cursor = 0;  // refusals come in timeline order
+  for (std::string entry : run.log) {
+    const bool refused = entry.find("refused") != std::string::npos;
+    if (refused) entry = nameCommand(entry, timeline, cursor);
+    std::fprintf(stderr, "coilsim: %s: %s\n", source.c_str(), entry.c_str());
+    if (refused) record.warnings.push_back(source + ": " + entry);
+  }
+  record.deployment = ds;
+  std::string line = stepSummary(model, state, run.steps, steps, seconds) + "; coil " +
+                     fmt("%.6g", units::mToMm(ds.deployed)) + " of " + fmt("%.6g", units::mToMm(dep.coilLength)) +
+                     " mm out, twist " + fmt("%.6g", units::radToDeg(ds.twist)) + " deg" +
+                     (ds.detached ? ", detached" : "") +
+                     (ds.tipOffset != 0 ? ", catheter retracted " + fmt("%.6g", units::mToMm(ds.tipOffset)) + " mm"
+                                        : std::string()) +
+                     "; state " + io::stateHash(state);
+  if (run.ok) return {true, line};
+  record.status = "step_refused";
+  record.error = stepError.empty() ? "a step was refused" : stepError;
   return {false, line};
 }
 
@@ -142,14 +209,27 @@ int run(const RunOptions& o) {
   if (spec.solve == io::SolveMode::Static && (o.durationS || o.steps))
     return usageError(o.scene + ": --duration and --steps apply to dynamic scenes; this scene has \"solve\": \"static\"");
   Model model;
+  io::CompiledScene compiled;
   try {
-    model = compileModel(io::compileScene(spec));
+    compiled = io::compileSceneWithDeployment(spec);
+    model = compileModel(compiled.model);
   } catch (const io::InputError&) {
     throw;
   } catch (const std::exception& e) {
     return usageError(o.scene + ": " + e.what());
   }
+  // A timeline drives a deployment: without one there is nothing to push.
+  std::vector<TimedCommand> timeline;
+  if (!o.input.empty()) {
+    if (!compiled.deployment)
+      return usageError(o.input + ": a timeline drives a coil deployment, but " + o.scene +
+                        " has no \"deployment\" block (docs/scene-format.md)");
+    timeline = io::loadTimeline(o.input);  // throws InputError
+  }
   State state = makeState(model);
+  DeploymentState deployment;
+  if (compiled.deployment)
+    deployment = initDeployment(*compiled.deployment, model, state, compiled.initialDeployed, compiled.initialTwist);
   io::RunRecord record;
   record.scene = o.scene;
   record.sceneName = spec.name;
@@ -157,7 +237,11 @@ int run(const RunOptions& o) {
   record.warnings = spec.warnings;
   for (const std::string& w : spec.warnings) std::fprintf(stderr, "coilsim: warning: %s\n", w.c_str());
 
-  const bool window = !o.headless && haveDisplay();
+  bool window = !o.headless && haveDisplay();
+  if (window && !o.input.empty()) {
+    std::fprintf(stderr, "coilsim: the window does not play timelines yet: running %s off-screen\n", o.input.c_str());
+    window = false;
+  }
   if (window) {
 #ifdef COILSIM_HAVE_UI
     if (spec.solve == io::SolveMode::Static) {
@@ -171,6 +255,7 @@ int run(const RunOptions& o) {
     if (o.steps) v.runSeconds = double(*o.steps) * model.timeStep;
     if (o.durationS) v.runSeconds = *o.durationS;
     const int code = ui::runWindow(model, state, v);
+    if (compiled.deployment) record.deployment = deployment;
     return writeOut(o, model, state, record) ? code : kExitUsage;
 #else
     return usageError("this coilsim was built without the ui layer, so it cannot open a window; run with --headless "
@@ -178,13 +263,17 @@ int run(const RunOptions& o) {
 #endif
   }
 
-  if (!o.headless) std::fprintf(stderr, "coilsim: no display (DISPLAY and WAYLAND_DISPLAY unset): running off-screen\n");
+  if (!o.headless && !haveDisplay())
+    std::fprintf(stderr, "coilsim: no display (DISPLAY and WAYLAND_DISPLAY unset): running off-screen\n");
   Outcome r;
   if (spec.solve == io::SolveMode::Static) {
     r = simulateStatic(model, state, spec, record);
   } else {
     const long steps = o.steps ? *o.steps : io::stepCount(o.durationS ? *o.durationS : spec.durationS, model.timeStep);
-    r = simulateDynamic(model, state, steps, record);
+    if (compiled.deployment)
+      r = simulateDeployment(*compiled.deployment, model, state, deployment, timeline, o.input, steps, record);
+    else
+      r = simulateDynamic(model, state, steps, record);
   }
   std::printf("%s: %s\n", o.scene.c_str(), r.summary.c_str());
   std::fflush(stdout);

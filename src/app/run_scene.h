@@ -15,6 +15,7 @@ struct RunOptions {
   std::string scene;
   bool headless = false;
   std::string out;                  // result file, empty: none
+  std::string input;                // input timeline (coilsim-timeline/1), empty: none
   std::optional<double> durationS;  // overrides the scene's duration_s
   std::optional<long> steps;        // overrides it by a step count
   std::string screenshot;           // PNG path, empty: none
