@@ -14,10 +14,11 @@ double assembleRod(const Model& model, int rodIndex, RodState& rod, double time,
     for (auto& d : w.effectD) d.setZero();
     w.effectsTouchedMatrix = false;
   }
-  if (withTangent) w.stiffness.setZero();
-
+  // Each diagonal block is written by its left beam and added to by its
+  // right one, so no block needs clearing first.
   double energy = 0;
   BeamEval ev;
+  if (withTangent && rod.activeNodes > 0) w.stiffness.diag[0].setZero();
   for (int e = 0; e + 1 < rod.activeNodes; ++e) {
     evalBeam(rod.beams[e], rod.x[e], rod.q[e], rod.x[e + 1], rod.q[e + 1], withTangent, ev);
     w.force[e] += ev.forceA;
@@ -25,8 +26,8 @@ double assembleRod(const Model& model, int rodIndex, RodState& rod, double time,
     energy += ev.energy;
     if (withTangent) {
       w.stiffness.diag[e] += ev.kaa;
-      w.stiffness.diag[e + 1] += ev.kbb;
-      w.stiffness.lower[e] += ev.kba;
+      w.stiffness.diag[e + 1] = ev.kbb;
+      w.stiffness.lower[e] = ev.kba;
     }
   }
   for (const NodalLoad& l : rm.loads) {

@@ -59,23 +59,33 @@ BeamRest makeBeamRest(const Vec3& xa, const Quat& qa, const Vec3& xb, const Quat
 
 namespace {
 
-// sum_k d_k e_k e_k^T for the columns e_k of R: R diag(d) R^T.
-inline Mat3 rotatedDiagonal(const Mat3& R, const Vec3& d) { return R * d.asDiagonal() * R.transpose(); }
+// R diag(d) R^T, written out: this runs for every beam in every step.
+inline Mat3 rotatedDiagonal(const Mat3& R, const Vec3& d) {
+  Mat3 rd;
+  for (int k = 0; k < 3; ++k) rd.col(k) = R.col(k) * d[k];
+  Mat3 out;
+  for (int i = 0; i < 3; ++i)
+    for (int j = i; j < 3; ++j) out(i, j) = out(j, i) = rd(i, 0) * R(j, 0) + rd(i, 1) * R(j, 1) + rd(i, 2) * R(j, 2);
+  return out;
+}
 
 // Global tangent blocks T K T^T from the distinct entries of the local K.
 // With ey, ez the element's transverse axes, the bending-shear coupling of
-// node a's translation with its rotation is shearY ey ez^T - shearZ ez ey^T;
-// the signs of the other blocks follow Przemieniecki's matrix (beam.h).
+// node a's translation with its rotation is c = shearY ey ez^T - shearZ ez ey^T;
+// the signs of the other blocks follow Przemieniecki's matrix (beam.h):
+//   K(a,a) = [tt c; c^T rs],  K(b,a) = [-tt -c; c^T rc],  K(b,b) = [tt -c; -c^T rs].
 void globalTangent(const BeamRest& r, const Mat3& R, BeamEval& out) {
   const Mat3 tt = rotatedDiagonal(R, r.axial);
-  const Mat3 rrSelf = rotatedDiagonal(R, r.rotSelf);
-  const Mat3 rrCross = rotatedDiagonal(R, r.rotCross);
-  const Mat3 yz = R.col(1) * R.col(2).transpose();
-  const Mat3 c = r.shearY * yz - r.shearZ * yz.transpose();  // K(a_t, a_r) rotated
-  out.kaa << tt, c, c.transpose(), rrSelf;
-  // K(b, a): translations of b against a: -tt; b_t against a_r: -c; b_r against a_t: c^T.
-  out.kba << -tt, -c, c.transpose(), rrCross;
-  out.kbb << tt, -c, -c.transpose(), rrSelf;
+  const Mat3 rs = rotatedDiagonal(R, r.rotSelf);
+  const Mat3 rc = rotatedDiagonal(R, r.rotCross);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double c = r.shearY * R(i, 1) * R(j, 2) - r.shearZ * R(i, 2) * R(j, 1);   // c(i, j)
+      const double ct = r.shearY * R(j, 1) * R(i, 2) - r.shearZ * R(j, 2) * R(i, 1);  // c(j, i)
+      out.kaa(i, j) = tt(i, j), out.kaa(i, j + 3) = c, out.kaa(i + 3, j) = ct, out.kaa(i + 3, j + 3) = rs(i, j);
+      out.kba(i, j) = -tt(i, j), out.kba(i, j + 3) = -c, out.kba(i + 3, j) = ct, out.kba(i + 3, j + 3) = rc(i, j);
+      out.kbb(i, j) = tt(i, j), out.kbb(i, j + 3) = -c, out.kbb(i + 3, j) = -ct, out.kbb(i + 3, j + 3) = rs(i, j);
+    }
 }
 
 }  // namespace
