@@ -94,21 +94,32 @@ void evalBeam(const BeamRest& rest, const Vec3& xa, const Quat& qa, const Vec3& 
               bool withTangent, BeamEval& out) {
   const Quat carried = qa * rest.nodeToElement;  // node a's frame turned by the rest offset
   const Quat carriedB = qb * rest.restRelative.conjugate();  // the same frame as node b carries it
-  // Mean of the two carried frames: halfway along the relative rotation.
-  const Quat mean = (carried * quatExp(0.5 * quatLog(carried.conjugate() * carriedB))).normalized();
+  // Mean of the two carried frames, halfway along the relative rotation:
+  // for unit quaternions in one hemisphere that is exactly their normalised sum.
+  const double side = carried.coeffs().dot(carriedB.coeffs()) < 0 ? -1.0 : 1.0;
+  Quat mean;
+  mean.coeffs() = (carried.coeffs() + side * carriedB.coeffs()).normalized();
   const Vec3 chord = xb - xa;
   const double length = chord.norm();
   out.frame = (minimalRotation(mean * Vec3::UnitX(), chord / length) * mean).normalized();
   const Mat3 R = out.frame.toRotationMatrix();
   out.rotationA = quatLog(out.frame.conjugate() * carried);
   out.deformation << length - rest.length, 0, 0, quatLog(out.frame.conjugate() * carriedB);
-  Eigen::Matrix<double, 12, 1> d;
-  d << 0, 0, 0, out.rotationA, out.deformation;
-  // Holding forces of the local element: K d. The transverse end forces are
-  // then taken from the end moments over the current length, so that the
-  // element balances moments exactly when it is stretched too.
-  Eigen::Matrix<double, 12, 1> f = rest.stiffness * d;
-  out.energy = 0.5 * d.dot(f);
+  // Holding forces of the local element, K d, from the distinct entries of
+  // K: d has the stretch and the two end rotations only. The transverse end
+  // forces are then taken from the end moments over the current length, so
+  // that the element balances moments exactly when it is stretched too.
+  const double u = out.deformation[0];
+  const Vec3& ta = out.rotationA;
+  const Vec3 tb = out.deformation.tail<3>();
+  Eigen::Matrix<double, 12, 1> f;
+  const Vec3 ma = rest.rotSelf.cwiseProduct(ta) + rest.rotCross.cwiseProduct(tb);
+  const Vec3 mb = rest.rotCross.cwiseProduct(ta) + rest.rotSelf.cwiseProduct(tb);
+  f[6] = rest.axial[0] * u;
+  f[0] = -f[6];
+  f.segment<3>(3) = ma;
+  f.segment<3>(9) = mb;
+  out.energy = 0.5 * (u * f[6] + ta.dot(ma) + tb.dot(mb));
   f[7] = -(f[5] + f[11]) / length;
   f[8] = (f[4] + f[10]) / length;
   f[1] = -f[7];
