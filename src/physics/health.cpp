@@ -13,15 +13,15 @@ std::string checkHealth(const Model& model, const State& state) {
     const RodModel& rm = model.rods[k];
     const RodState& r = state.rods[k];
     if (!r.active) continue;
-    const std::string where = "rod '" + rm.name + "' node ";
+    const auto where = [&rm] { return "rod '" + rm.name + "' node "; };  // built only on failure
     for (int i = 0; i < r.activeNodes; ++i) {
       if (!r.x[i].allFinite() || !r.q[i].coeffs().allFinite() || !r.v[i].allFinite() || !r.w[i].allFinite())
-        return where + std::to_string(i) + ": non-finite position, rotation or velocity";
+        return where() + std::to_string(i) + ": non-finite position, rotation or velocity";
       if (r.v[i].norm() > lim.maxSpeed)
-        return where + std::to_string(i) + ": speed " + std::to_string(r.v[i].norm()) + " m/s exceeds " +
+        return where() + std::to_string(i) + ": speed " + std::to_string(r.v[i].norm()) + " m/s exceeds " +
                std::to_string(lim.maxSpeed) + " m/s (numerical blow-up)";
       if (r.w[i].norm() > lim.maxAngularSpeed)
-        return where + std::to_string(i) + ": angular speed exceeds " + std::to_string(lim.maxAngularSpeed) + " rad/s";
+        return where() + std::to_string(i) + ": angular speed exceeds " + std::to_string(lim.maxAngularSpeed) + " rad/s";
     }
     for (int e = 0; e + 1 < r.activeNodes; ++e) {
       const double strain = (r.x[e + 1] - r.x[e]).norm() / r.beams[e].length - 1.0;
