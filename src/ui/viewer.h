@@ -1,8 +1,10 @@
 #pragma once
 // The graphical front end as the CLI sees it: an interactive window (GLFW)
 // and an off-screen render to PNG (OSMesa), both drawing the same scene.
+#include <functional>
 #include <string>
 
+#include "physics/draw_data.h"
 #include "physics/model.h"
 #include "physics/state.h"
 
@@ -16,6 +18,13 @@ struct ViewerOptions {
   bool drawPanel = true;        // draw the ImGui panel into the image too
   double runSeconds = -1;       // window: close by itself after this much simulated time (<0: never)
   std::string windowScreenshotPath;  // window: PNG of the last frame when it closes (tests under Xvfb)
+  bool startPaused = false;     // window: open paused (ignored when runSeconds >= 0)
+  bool vsync = true;            // window: wait for the display between frames
+  int samples = -1;             // multisampling of the 3D view: 0 off, <0 automatic (4; in the
+                                // window 0 on software GL, where it would cost 3x the frame)
+  // Optional: adds to the draw data what the core does not fill (vessel
+  // meshes, contact or validation markers), called whenever the state changes.
+  std::function<void(const Model&, const State&, DrawData&)> addDrawData;
 };
 
 // Opens the window and runs the real-time loop until the user closes it (or

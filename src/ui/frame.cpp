@@ -1,0 +1,42 @@
+#include "ui/frame.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+namespace coilsim::ui {
+
+int sidebarWidth(const FrameParts& p, int width) {
+  if (!p.drawPanel) return 0;
+  return std::min(std::clamp(int(0.3 * width), 300, 380), width / 2);
+}
+
+bool drawFrame(FrameParts& p, int width, int height, double dt, std::string& error) {
+  // The panel is a sidebar on the left; the scene fills the rest.
+  p.panel.sidebarWidth = sidebarWidth(p, width);
+  const render::Rect area{p.panel.sidebarWidth, 0, width - p.panel.sidebarWidth, height};
+  const render::Bounds bounds = render::boundsOf(p.session.drawData());
+  p.views.fitIfNew(bounds, area.width, area.height);
+  if (p.panel.fitRequested) {
+    p.views.fit(bounds, area.width, area.height);
+    p.panel.fitRequested = false;
+  }
+  p.settings.mode = p.views.mode();
+  if (!p.renderer.render(p.session.drawData(), p.views.camera(), p.settings, width, height, area, error))
+    return false;
+  p.imgui.newFrame(width, height, dt);
+  if (p.drawPanel) drawPanel(p.session, p.views, p.panel);
+  drawViewLabels(p.renderer.viewports(), height, p.views);
+  p.renderer.bindFrame();
+  p.imgui.render();
+  return true;
+}
+
+void layoutPanelOnly(FrameParts& p, int width, int height) {
+  p.panel.sidebarWidth = sidebarWidth(p, width);
+  p.imgui.newFrame(width, height, 1.0 / 60.0);
+  if (p.drawPanel) drawPanel(p.session, p.views, p.panel);
+  ImGui::EndFrame();
+}
+
+}  // namespace coilsim::ui

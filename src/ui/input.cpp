@@ -1,0 +1,153 @@
+#include "ui/input.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace coilsim::ui {
+namespace {
+
+WindowInput* self(GLFWwindow* w) { return static_cast<WindowInput*>(glfwGetWindowUserPointer(w)); }
+
+void keyCallback(GLFWwindow* w, int key, int, int action, int mods) {
+  if (action == GLFW_PRESS || action == GLFW_REPEAT) self(w)->onKey(key, mods);
+}
+
+void scrollCallback(GLFWwindow* w, double, double dy) { self(w)->onScroll(dy); }
+
+double deadzone(double v) { return std::abs(v) < 0.15 ? 0.0 : v; }
+
+render::ViewMode nextMode(render::ViewMode m) {
+  switch (m) {
+    case render::ViewMode::Shaded: return render::ViewMode::XRay;
+    case render::ViewMode::XRay: return render::ViewMode::Biplane;
+    case render::ViewMode::Biplane: return render::ViewMode::Shaded;
+  }
+  return render::ViewMode::Shaded;
+}
+
+}  // namespace
+
+WindowInput::WindowInput(GLFWwindow* window, Session& session, Views& views, PanelContext& panel)
+    : window_(window), session_(session), views_(views), panel_(panel) {
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetKeyCallback(window_, keyCallback);
+  glfwSetScrollCallback(window_, scrollCallback);
+}
+
+void WindowInput::onKey(int key, int mods) {
+  if (!keyboardFree_) return;
+  switch (key) {
+    case GLFW_KEY_SPACE: session_.setPlaying(!session_.playing()); break;
+    case GLFW_KEY_N:
+      if (!session_.playing()) session_.stepOnce();
+      break;
+    case GLFW_KEY_R: session_.reset(); break;
+    case GLFW_KEY_1: views_.setMode(render::ViewMode::Shaded); break;
+    case GLFW_KEY_2: views_.setMode(render::ViewMode::XRay); break;
+    case GLFW_KEY_3: views_.setMode(render::ViewMode::Biplane); break;
+    case GLFW_KEY_F: panel_.fitRequested = true; break;
+    case GLFW_KEY_F12: screenshot_ = true; break;
+    case GLFW_KEY_ESCAPE: panel_.closeRequested = true; break;
+    case GLFW_KEY_EQUAL:
+    case GLFW_KEY_KP_ADD: views_.camera().zoom(1.15); break;
+    case GLFW_KEY_MINUS:
+    case GLFW_KEY_KP_SUBTRACT: views_.camera().zoom(1.0 / 1.15); break;
+    default: break;
+  }
+  (void)mods;
+}
+
+void WindowInput::onScroll(double dy) {
+  if (mouseFree_) scroll_ += dy;
+}
+
+void WindowInput::update(double dt, bool imguiWantsMouse, bool imguiWantsKeyboard, int framebufferHeight) {
+  keyboardFree_ = !imguiWantsKeyboard;
+  mouseFree_ = !imguiWantsMouse;
+  render::Camera& cam = views_.camera();
+
+  // Drags: left orbits, right or middle (or shift + left) pans.
+  double x = 0, y = 0;
+  glfwGetCursorPos(window_, &x, &y);
+  const bool left = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+  const bool right = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
+                     glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
+  const bool shift = glfwGetKey(window_, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
+                     glfwGetKey(window_, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+  if (!dragging_ && (left || right) && mouseFree_) {
+    dragging_ = true;  // a drag that starts on the panel stays the panel's
+    dragPan_ = right || shift;
+  } else if (dragging_ && !left && !right) {
+    dragging_ = false;
+  }
+  if (dragging_) {
+    int ww = 0, wh = 0;
+    glfwGetWindowSize(window_, &ww, &wh);
+    const double dx = x - lastX_, dy = y - lastY_;
+    if (dragPan_)
+      cam.pan(-dx / std::max(wh, 1), dy / std::max(wh, 1));
+    else
+      cam.orbit(-0.008 * dx, 0.008 * dy);
+  }
+  lastX_ = x;
+  lastY_ = y;
+  if (scroll_ != 0) {
+    cam.zoom(std::pow(1.15, scroll_));
+    scroll_ = 0;
+  }
+
+  // Held arrow keys orbit (pan with shift) at a steady rate.
+  if (keyboardFree_) {
+    const double h = (glfwGetKey(window_, GLFW_KEY_RIGHT) == GLFW_PRESS) - (glfwGetKey(window_, GLFW_KEY_LEFT) == GLFW_PRESS);
+    const double v = (glfwGetKey(window_, GLFW_KEY_UP) == GLFW_PRESS) - (glfwGetKey(window_, GLFW_KEY_DOWN) == GLFW_PRESS);
+    if (h != 0 || v != 0) {
+      if (shift)
+        cam.pan(0.6 * h * dt, 0.6 * v * dt);
+      else
+        cam.orbit(-1.5 * h * dt, 1.0 * v * dt);
+    }
+  }
+  (void)framebufferHeight;
+  gamepad(dt);
+}
+
+void WindowInput::gamepad(double dt) {
+  for (int jid = GLFW_JOYSTICK_1; jid <= GLFW_JOYSTICK_LAST; ++jid) {
+    GLFWgamepadstate pad;
+    if (!glfwJoystickIsGamepad(jid) || !glfwGetGamepadState(jid, &pad)) continue;
+    render::Camera& cam = views_.camera();
+    cam.orbit(-2.0 * dt * deadzone(pad.axes[GLFW_GAMEPAD_AXIS_LEFT_X]),
+              -1.5 * dt * deadzone(pad.axes[GLFW_GAMEPAD_AXIS_LEFT_Y]));
+    cam.pan(0.6 * dt * deadzone(pad.axes[GLFW_GAMEPAD_AXIS_RIGHT_X]),
+            -0.6 * dt * deadzone(pad.axes[GLFW_GAMEPAD_AXIS_RIGHT_Y]));
+    // Triggers rest at -1: map to 0..1.
+    const double in = 0.5 * (pad.axes[GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER] + 1.0);
+    const double out = 0.5 * (pad.axes[GLFW_GAMEPAD_AXIS_LEFT_TRIGGER] + 1.0);
+    if (in - out != 0) cam.zoom(std::pow(3.0, dt * (deadzone(in) - deadzone(out))));
+    auto pressed = [&](int b) { return pad.buttons[b] == GLFW_PRESS && buttons_[b] != GLFW_PRESS; };
+    if (pressed(GLFW_GAMEPAD_BUTTON_A)) session_.setPlaying(!session_.playing());
+    if (pressed(GLFW_GAMEPAD_BUTTON_B)) session_.reset();
+    if (pressed(GLFW_GAMEPAD_BUTTON_X)) panel_.fitRequested = true;
+    if (pressed(GLFW_GAMEPAD_BUTTON_Y)) views_.setMode(nextMode(views_.mode()));
+    for (int b = 0; b <= GLFW_GAMEPAD_BUTTON_LAST; ++b) buttons_[b] = pad.buttons[b];
+    return;  // the first gamepad found drives the view
+  }
+}
+
+bool WindowInput::screenshotRequested() {
+  const bool r = screenshot_;
+  screenshot_ = false;
+  return r;
+}
+
+std::string WindowInput::nextScreenshotName() {
+  char name[64];
+  std::snprintf(name, sizeof name, "coilsim-%d.png", ++screenshots_);
+  return name;
+}
+
+}  // namespace coilsim::ui

@@ -1,0 +1,54 @@
+// renderOffscreen: one frame through OSMesa, panel included, to a PNG.
+#include <cstdio>
+
+#include "render/backend.h"
+#include "render/gl_loader.h"
+#include "render/image.h"
+#include "ui/frame.h"
+#include "ui/viewer.h"
+
+namespace coilsim::ui {
+
+bool renderOffscreen(const Model& model, const State& state, const ViewerOptions& options, std::string& error) {
+  const auto mode = render::parseViewMode(options.view);
+  if (!mode) {
+    error = "unknown view '" + options.view + "' (expected 3d, xray or biplane)";
+    return false;
+  }
+  if (options.screenshotPath.empty()) {
+    error = "no screenshot path given for the off-screen render";
+    return false;
+  }
+  render::BackendOptions bo;
+  bo.width = options.width;
+  bo.height = options.height;
+  auto backend = render::createBackend("osmesa", bo, error);
+  if (!backend) return false;
+  render::Renderer renderer;
+  if (!renderer.init(error)) return false;
+  ImGuiLayer imgui;
+  if (!imgui.init(nullptr, error)) return false;
+
+  Session session(model, state, options.addDrawData);
+  Views views(*mode);
+  PanelContext panel;
+  panel.sceneName = options.scenePath;
+  panel.interactive = false;
+  panel.glInfo = render::glDescription();
+  render::RenderSettings settings;
+  settings.samples = options.samples >= 0 ? options.samples : 4;  // one frame: quality first
+  FrameParts parts{renderer, imgui, session, views, panel, settings, options.drawPanel};
+
+  if (session.showingOlderState())
+    std::fprintf(stderr, "coilsim: the state to render is not healthy; drawing nothing in its place\n");
+  layoutPanelOnly(parts, options.width, options.height);
+  if (!drawFrame(parts, options.width, options.height, 1.0 / 60.0, error)) return false;
+  render::Image image;
+  if (!renderer.readFrame(image)) {
+    error = "could not read the off-screen frame back";
+    return false;
+  }
+  return render::writePng(options.screenshotPath, image, error);
+}
+
+}  // namespace coilsim::ui

@@ -1,0 +1,192 @@
+#include "ui/panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "physics/integrator.h"
+
+namespace coilsim::ui {
+namespace {
+
+const ImVec4 kWarn(1.0f, 0.7f, 0.2f, 1.0f);
+const ImVec4 kError(1.0f, 0.4f, 0.35f, 1.0f);
+
+// Energies are tiny (a coil stores micro-joules): one readable unit for the
+// whole table, picked from the largest value.
+struct EnergyUnit {
+  const char* name;
+  double scale;
+};
+
+EnergyUnit energyUnit(double largest) {
+  if (largest >= 1.0 || !std::isfinite(largest)) return {"J", 1.0};
+  if (largest >= 1e-3) return {"mJ", 1e3};
+  if (largest >= 1e-6) return {"\xc2\xb5J", 1e6};
+  return {"nJ", 1e9};
+}
+
+void simulationSection(Session& session, PanelContext& ctx) {
+  const State& s = session.state();
+  if (session.playing()) {
+    if (ImGui::Button("Pause (Space)")) session.setPlaying(false);
+  } else {
+    if (ImGui::Button("Play (Space)")) session.setPlaying(true);
+  }
+  ImGui::SameLine();
+  ImGui::BeginDisabled(session.playing());
+  if (ImGui::Button("Step (N)")) session.stepOnce();
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (ImGui::Button("Reset (R)")) session.reset();
+
+  ImGui::Text("simulated time  %.4f s", s.time);
+  const double meanStep = s.stats.steps ? s.stats.totalStepSeconds / double(s.stats.steps) : 0.0;
+  ImGui::Text("time step       %.3g ms", 1e3 * session.model().timeStep);
+  ImGui::Text("step time       %.3f ms", 1e3 * s.stats.lastStepSeconds);
+  ImGui::Text("  mean / max    %.3f / %.3f ms", 1e3 * meanStep, 1e3 * s.stats.maxStepSeconds);
+  if (ctx.interactive) {
+    if (session.playing()) {
+      ImGui::Text("real-time factor %.2fx", session.loop().realTimeFactor());
+      if (session.loop().behind())
+        ImGui::TextColored(kWarn, "Physics is slower than real time:\nsimulated time runs %.2fx real time.",
+                           session.loop().realTimeFactor());
+    } else {
+      ImGui::TextDisabled("real-time factor (paused)");
+    }
+    if (ctx.frameSeconds > 0)
+      ImGui::Text("frame %.1f ms (%.0f fps), drawing %.1f ms", 1e3 * ctx.frameSeconds, 1.0 / ctx.frameSeconds,
+                  1e3 * ctx.renderSeconds);
+  } else {
+    ImGui::TextDisabled("off-screen snapshot");
+  }
+
+  const Energy e = computeEnergy(session.model(), s);
+  const EnergyUnit unit = energyUnit(std::max({std::abs(e.kinetic), std::abs(e.elastic), std::abs(e.potential)}));
+  if (ImGui::BeginTable("energy", 2, ImGuiTableFlags_SizingFixedFit)) {
+    auto row = [&](const char* name, double joules) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(name);
+      ImGui::TableNextColumn();
+      ImGui::Text("%10.4f %s", joules * unit.scale, unit.name);
+    };
+    row("kinetic energy", e.kinetic);
+    row("elastic energy", e.elastic);
+    row("potential energy", e.potential);
+    row("total energy", e.total());
+    ImGui::EndTable();
+  }
+
+  // Blow-ups are reported here and never drawn.
+  if (!session.haltMessage().empty()) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(kError, "Stopped: %s", session.haltMessage().c_str());
+    ImGui::TextDisabled("Reset, or change the effects and press Play.");
+    ImGui::PopTextWrapPos();
+  }
+  if (session.showingOlderState())
+    ImGui::TextColored(kError, "The current state is unhealthy; showing the last good one.");
+  if (s.blowups > 0) ImGui::TextColored(kError, "refused steps: %ld", s.blowups);
+  if (!s.warnings.empty()) {
+    ImGui::PushTextWrapPos(0.0f);
+    for (const std::string& w : s.warnings) ImGui::TextColored(kWarn, "%s", w.c_str());
+    ImGui::PopTextWrapPos();
+  }
+}
+
+void viewSection(Views& views, PanelContext& ctx) {
+  int mode = int(views.mode());
+  bool changed = ImGui::RadioButton("3D (1)", &mode, int(render::ViewMode::Shaded));
+  ImGui::SameLine();
+  changed |= ImGui::RadioButton("X-ray (2)", &mode, int(render::ViewMode::XRay));
+  ImGui::SameLine();
+  changed |= ImGui::RadioButton("Biplane (3)", &mode, int(render::ViewMode::Biplane));
+  if (changed) views.setMode(render::ViewMode(mode));
+  if (ImGui::Button("Fit to scene (F)")) ctx.fitRequested = true;
+  if (views.mode() != render::ViewMode::Shaded) {
+    ImGui::SameLine();
+    ImGui::Text("C-arm %+.0f\xc2\xb0 rot, %+.0f\xc2\xb0 ang", views.rotationDeg(), views.angulationDeg());
+  }
+}
+
+void effectsSection(Session& session) {
+  Model& m = session.model();
+  if (m.effects.empty()) ImGui::TextDisabled("no effects in this scene");
+  for (size_t i = 0; i < m.effects.size(); ++i) {
+    EffectUse& use = m.effects[i];
+    if (!use.effect) continue;
+    ImGui::PushID(int(i));
+    const std::string name(use.name());
+    ImGui::Checkbox(name.c_str(), &use.enabled);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%.*s", int(use.effect->description().size()),
+                                                  use.effect->description().data());
+    // Parameters are declared once (name, unit, bounds) and edited in their edge unit.
+    const auto params = use.effect->params();
+    for (size_t k = 0; k < params.size() && k < use.values.size(); ++k) {
+      const ParamSpec& p = params[k];
+      double edge = use.values[k] / p.toSI;
+      const std::string label = "  " + std::string(p.name) + " [" + std::string(p.unit) + "]";
+      ImGui::SetNextItemWidth(140.0f);
+      if (ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &edge, &p.min, &p.max, "%.4g"))
+        use.values[k] = edge * p.toSI;
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%.*s", int(p.description.size()), p.description.data());
+    }
+    ImGui::PopID();
+  }
+}
+
+void helpSection() {
+  ImGui::TextUnformatted(
+      "left drag       orbit (C-arm in X-ray)\n"
+      "right/mid drag  pan (or shift + left)\n"
+      "wheel, +/-      zoom\n"
+      "arrows          orbit, shift: pan\n"
+      "Space N R       play/pause, step, reset\n"
+      "1 2 3           3D, X-ray, biplane\n"
+      "F               fit to scene\n"
+      "F12             screenshot (coilsim-N.png)\n"
+      "Esc             close\n"
+      "gamepad         sticks orbit/pan, triggers zoom,\n"
+      "                A play/pause, B reset, Y view");
+}
+
+}  // namespace
+
+void drawPanel(Session& session, Views& views, PanelContext& ctx) {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(float(ctx.sidebarWidth), io.DisplaySize.y), ImGuiCond_Always);
+  const std::string title = "coilsim" + (ctx.sceneName.empty() ? std::string() : "  " + ctx.sceneName) + "###panel";
+  ImGui::Begin(title.c_str(), nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  if (ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) simulationSection(session, ctx);
+  if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) viewSection(views, ctx);
+  if (ImGui::CollapsingHeader("Effects", ImGuiTreeNodeFlags_DefaultOpen)) effectsSection(session);
+  // Deployment controls (push / pull / twist / detach): see deployment_panel.cpp.
+  if (ImGui::CollapsingHeader("Deployment", ImGuiTreeNodeFlags_DefaultOpen)) drawDeploymentControls(session);
+  if (ctx.interactive && ImGui::CollapsingHeader("Mouse, keys, gamepad")) helpSection();
+  if (!ctx.glInfo.empty() && ctx.interactive) ImGui::TextDisabled("%s", ctx.glInfo.c_str());
+  ImGui::End();
+}
+
+void drawViewLabels(const std::vector<render::ViewportInfo>& viewports, int frameHeight, const Views& views) {
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  for (const render::ViewportInfo& vp : viewports) {
+    if (vp.label == "3D") continue;
+    // Viewports count from the bottom, ImGui from the top.
+    const float right = float(vp.x + vp.width) - 10.0f, top = float(frameHeight - (vp.y + vp.height)) + 8.0f;
+    char text[96];
+    if (vp.label == "AP")
+      std::snprintf(text, sizeof text, "%s  %+.0f\xc2\xb0 / %+.0f\xc2\xb0", vp.label.c_str(), views.rotationDeg(),
+                    views.angulationDeg());
+    else
+      std::snprintf(text, sizeof text, "%s", vp.label.c_str());
+    const ImVec2 size = ImGui::CalcTextSize(text);
+    draw->AddText(ImVec2(right - size.x, top), IM_COL32(255, 255, 255, 230), text);
+  }
+}
+
+}  // namespace coilsim::ui

@@ -1,0 +1,142 @@
+// runWindow: the interactive simulator. GLFW window, physics on a fixed time
+// step decoupled from drawing (Session / RealTimeLoop), ImGui panel, camera
+// on mouse, keys and gamepad.
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "render/backend.h"
+#include "render/gl_loader.h"
+#include "render/image.h"
+#include "ui/frame.h"
+#include "ui/input.h"
+#include "ui/viewer.h"
+
+namespace coilsim::ui {
+namespace {
+
+double wallSeconds() {
+  using clock = std::chrono::steady_clock;
+  static const clock::time_point start = clock::now();
+  return std::chrono::duration<double>(clock::now() - start).count();
+}
+
+bool writeWindowShot(int width, int height, const std::string& path) {
+  render::Image image;
+  std::string error;
+  if (!render::Renderer::readWindowPixels(width, height, image)) {
+    std::fprintf(stderr, "coilsim: could not read the window back for %s\n", path.c_str());
+    return false;
+  }
+  if (!render::writePng(path, image, error)) {
+    std::fprintf(stderr, "coilsim: %s\n", error.c_str());
+    return false;
+  }
+  std::printf("coilsim: wrote %s (%dx%d)\n", path.c_str(), width, height);
+  return true;
+}
+
+}  // namespace
+
+int runWindow(const Model& model, State& state, const ViewerOptions& options) {
+  const auto mode = render::parseViewMode(options.view);
+  if (!mode) {
+    std::fprintf(stderr, "coilsim: unknown view '%s' (expected 3d, xray or biplane)\n", options.view.c_str());
+    return 2;
+  }
+  std::string error;
+  render::BackendOptions bo;
+  bo.width = options.width;
+  bo.height = options.height;
+  bo.vsync = options.vsync;
+  bo.title = options.scenePath.empty() ? "coilsim" : "coilsim - " + options.scenePath;
+  auto backend = render::createBackend("glfw", bo, error);
+  if (!backend) {
+    std::fprintf(stderr, "coilsim: %s\n", error.c_str());
+    return 1;
+  }
+  GLFWwindow* window = static_cast<GLFWwindow*>(backend->nativeWindow());
+  render::Renderer renderer;
+  if (!renderer.init(error)) {
+    std::fprintf(stderr, "coilsim: %s\n", error.c_str());
+    return 1;
+  }
+
+  Session session(model, state, options.addDrawData);
+  Views views(*mode);
+  PanelContext panel;
+  panel.sceneName = options.scenePath;
+  panel.glInfo = render::glDescription();
+  render::RenderSettings settings;
+  settings.samples = options.samples >= 0 ? options.samples : (render::softwareRenderer() ? 0 : 4);
+
+  // Our callbacks first: ImGui's GLFW backend chains to them.
+  WindowInput input(window, session, views, panel);
+  ImGuiLayer imgui;
+  if (!imgui.init(window, error)) {
+    std::fprintf(stderr, "coilsim: %s\n", error.c_str());
+    return 1;
+  }
+  FrameParts parts{renderer, imgui, session, views, panel, settings, true};
+
+  const bool scripted = options.runSeconds >= 0;
+  session.setPlaying(scripted || !options.startPaused);
+  const double wallLimit = scripted ? 60.0 + 20.0 * options.runSeconds : 0.0;
+  const double start = wallSeconds();
+  double last = start;
+  int exitCode = 0;
+  bool closing = false;
+  while (!closing) {
+    glfwPollEvents();
+    const double now = wallSeconds();
+    const double dt = now - last;
+    last = now;
+    const int fbw = backend->framebufferWidth(), fbh = backend->framebufferHeight();
+    input.update(dt, imgui.wantsMouse(), imgui.wantsKeyboard(), fbh);
+
+    panel.lastAdvance = session.advance(dt, wallSeconds);
+
+    closing = glfwWindowShouldClose(window) || panel.closeRequested;
+    if (scripted) {
+      if (session.state().time >= options.runSeconds - 0.5 * session.model().timeStep) {
+        closing = true;
+      } else if (!session.haltMessage().empty()) {
+        std::fprintf(stderr, "coilsim: %s\n", session.haltMessage().c_str());
+        closing = true;
+        exitCode = 1;
+      } else if (now - start > wallLimit) {
+        std::fprintf(stderr, "coilsim: stopped after %.0f s of wall time at t = %.4f s of %.4f s\n", now - start,
+                     session.state().time, options.runSeconds);
+        closing = true;
+        exitCode = 1;
+      }
+    }
+
+    if (fbw <= 0 || fbh <= 0) {  // minimised: keep simulating, draw nothing
+      glfwWaitEventsTimeout(0.05);
+      continue;
+    }
+    const double drawStart = wallSeconds();
+    if (!drawFrame(parts, fbw, fbh, dt, error)) {
+      std::fprintf(stderr, "coilsim: %s\n", error.c_str());
+      exitCode = 1;
+      break;
+    }
+    renderer.present(fbw, fbh);
+    panel.renderSeconds = wallSeconds() - drawStart;
+    panel.frameSeconds = dt;
+    if (input.screenshotRequested()) {
+      writeWindowShot(fbw, fbh, input.nextScreenshotName());
+    }
+    if (closing && !options.windowScreenshotPath.empty() && !writeWindowShot(fbw, fbh, options.windowScreenshotPath))
+      exitCode = 1;
+    backend->present();
+  }
+  state = session.state();
+  return exitCode;
+}
+
+}  // namespace coilsim::ui
