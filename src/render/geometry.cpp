@@ -43,6 +43,32 @@ void fan(TriangleMesh& m, std::uint32_t pole, std::uint32_t ring, int sides, boo
   }
 }
 
+// Uniform Catmull-Rom through the nodes, with `k` extra points per segment
+// and colours interpolated linearly; the nodes themselves are kept.
+void subdivide(std::vector<Vec3>& centre, std::vector<Colour>& colours, int k) {
+  const size_t n = centre.size();
+  if (k <= 0 || n < 2) return;
+  std::vector<Vec3> c;
+  std::vector<Colour> col;
+  c.reserve((n - 1) * (k + 1) + 1);
+  col.reserve(c.capacity());
+  for (size_t i = 0; i + 1 < n; ++i) {
+    const Vec3& p1 = centre[i];
+    const Vec3& p2 = centre[i + 1];
+    const Vec3 p0 = i > 0 ? centre[i - 1] : Vec3(2 * p1 - p2);  // reflected at the ends
+    const Vec3 p3 = i + 2 < n ? centre[i + 2] : Vec3(2 * p2 - p1);
+    for (int j = 0; j <= k; ++j) {
+      const double t = double(j) / (k + 1), t2 = t * t, t3 = t2 * t;
+      c.push_back(0.5 * (2 * p1 + (p2 - p0) * t + (2 * p0 - 5 * p1 + 4 * p2 - p3) * t2 + (3 * p1 - p0 - 3 * p2 + p3) * t3));
+      col.push_back(colours[i] + float(t) * (colours[i + 1] - colours[i]));
+    }
+  }
+  c.push_back(centre.back());
+  col.push_back(colours.back());
+  centre.swap(c);
+  colours.swap(col);
+}
+
 }  // namespace
 
 void tubeFrames(const std::vector<Vec3>& centre, std::vector<Vec3>& tangents, std::vector<Vec3>& normals) {
@@ -92,6 +118,7 @@ void appendTube(const DrawTube& tube, const TubeOptions& options, TriangleMesh& 
   const double r = tube.radius * options.radiusScale;
   const int sides = std::max(options.sides, 3), caps = std::max(options.capRings, 1);
   if (centre.size() < 2 || !(r > 0) || !std::isfinite(r)) return;
+  subdivide(centre, colours, options.subdivisions);
 
   std::vector<Vec3> t, nrm;
   tubeFrames(centre, t, nrm);

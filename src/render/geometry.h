@@ -27,12 +27,16 @@ struct TriangleMesh {
 };
 
 struct TubeOptions {
-  int sides = 12;     // vertices around the tube
+  int sides = 16;     // vertices around the tube (silhouettes of thick coils stay round)
   int capRings = 3;   // rings of each hemispherical end cap
   double radiusScale = 1.0;
+  // Extra rings per segment on a Catmull-Rom curve through the nodes, so
+  // that a coarse centre line (few nodes per loop) still draws round loops.
+  int subdivisions = 0;
 };
 
 // Appends a tube of radius tube.radius around tube.centre: rings at each node
+// (and at `subdivisions` points between nodes)
 // perpendicular to the centre-line tangent, oriented by parallel transport
 // (robust to any twist of the material frames), smooth normals, per-node
 // colours (the first colour, or the role's default, where colours are
