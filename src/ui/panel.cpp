@@ -107,8 +107,7 @@ void viewSection(Views& views, PanelContext& ctx) {
   if (changed) views.setMode(render::ViewMode(mode));
   if (ImGui::Button("Fit to scene (F)")) ctx.fitRequested = true;
   if (views.mode() != render::ViewMode::Shaded) {
-    ImGui::SameLine();
-    ImGui::Text("C-arm %+.0f\xc2\xb0 rot, %+.0f\xc2\xb0 ang", views.rotationDeg(), views.angulationDeg());
+    ImGui::Text("C-arm rotation %+.0f\xc2\xb0, angulation %+.0f\xc2\xb0", views.rotationDeg(), views.angulationDeg());
   }
 }
 
@@ -128,12 +127,18 @@ void effectsSection(Session& session) {
     for (size_t k = 0; k < params.size() && k < use.values.size(); ++k) {
       const ParamSpec& p = params[k];
       double edge = use.values[k] / p.toSI;
-      const std::string label = "  " + std::string(p.name) + " [" + std::string(p.unit) + "]";
-      ImGui::SetNextItemWidth(140.0f);
-      if (ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &edge, &p.min, &p.max, "%.4g"))
+      ImGui::PushID(int(k));
+      ImGui::Indent();
+      ImGui::TextDisabled("%.*s [%.*s]", int(p.name.size()), p.name.data(), int(p.unit.size()), p.unit.data());
+      ImGui::SetNextItemWidth(-1.0f);
+      ImGui::BeginDisabled(!use.enabled);
+      if (ImGui::SliderScalar("##value", ImGuiDataType_Double, &edge, &p.min, &p.max, "%.4g"))
         use.values[k] = edge * p.toSI;
+      ImGui::EndDisabled();
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("%.*s", int(p.description.size()), p.description.data());
+      ImGui::Unindent();
+      ImGui::PopID();
     }
     ImGui::PopID();
   }

@@ -18,7 +18,7 @@ struct RealTimeConfig {
 struct FrameAdvance {
   int steps = 0;            // steps taken this frame
   bool droppedTime = false; // the budget ran out: simulated time fell behind real time
-  bool refused = false;     // the step function refused a step
+  bool refused = false;     // the step function refused a step (or asked to stop)
 };
 
 class RealTimeLoop {

@@ -57,9 +57,19 @@ void Session::reset() {
   refreshDrawData();
 }
 
+bool Session::reachedStopTime() const {
+  return stopTime_ >= 0 && state_.time >= stopTime_ - 0.5 * model_.timeStep;
+}
+
 FrameAdvance Session::advance(double realDt, const std::function<double()>& now) {
   if (!playing_) return {};
-  const FrameAdvance f = loop_.advance(realDt, [this] { return stepAndCheck(); }, now);
+  const FrameAdvance f = loop_.advance(realDt, [this] {
+    if (reachedStopTime()) {
+      playing_ = false;
+      return false;  // ends the frame exactly at the stop time
+    }
+    return stepAndCheck();
+  }, now);
   if (f.steps > 0 || f.refused) refreshDrawData();
   return f;
 }

@@ -39,6 +39,11 @@ class Session {
   // Advances by `realDt` seconds of real time when playing (see RealTimeLoop).
   FrameAdvance advance(double realDt, const std::function<double()>& now);
 
+  // Stop playing (pause) once simulated time reaches `seconds` (scripted
+  // runs); negative: never.
+  void setStopTime(double seconds) { stopTime_ = seconds; }
+  bool reachedStopTime() const;
+
   // Why stepping stopped (a refused step), empty while healthy.
   const std::string& haltMessage() const { return haltMessage_; }
   const RealTimeLoop& loop() const { return loop_; }
@@ -65,6 +70,7 @@ class Session {
   bool playing_ = false;
   bool stale_ = false;
   long steps_ = 0;
+  double stopTime_ = -1;
   std::string haltMessage_;
 };
 

@@ -84,6 +84,7 @@ int runWindow(const Model& model, State& state, const ViewerOptions& options) {
 
   const bool scripted = options.runSeconds >= 0;
   session.setPlaying(scripted || !options.startPaused);
+  if (scripted) session.setStopTime(options.runSeconds);
   const double wallLimit = scripted ? 60.0 + 20.0 * options.runSeconds : 0.0;
   const double start = wallSeconds();
   double last = start;
@@ -101,7 +102,7 @@ int runWindow(const Model& model, State& state, const ViewerOptions& options) {
 
     closing = glfwWindowShouldClose(window) || panel.closeRequested;
     if (scripted) {
-      if (session.state().time >= options.runSeconds - 0.5 * session.model().timeStep) {
+      if (session.reachedStopTime()) {
         closing = true;
       } else if (!session.haltMessage().empty()) {
         std::fprintf(stderr, "coilsim: %s\n", session.haltMessage().c_str());
