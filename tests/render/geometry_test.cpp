@@ -104,7 +104,7 @@ TEST(TubeGeometry, IsClosedAndWoundOutwards) {
     if (pos(v).x() >= 0 && pos(v).x() <= 0.01) {
       EXPECT_NEAR(distanceToPolyline(pos(v), t.centre), r, 1e-4 * r);
     }
-  // Cylinder plus two hemispheres, within the polygon's shortfall (12 sides, 3 cap rings).
+  // Cylinder plus two hemispheres, within the polygon's shortfall (16 sides, 3 cap rings).
   const double exact = M_PI * r * r * 0.01 + 4.0 / 3.0 * M_PI * r * r * r;
   const double v = signedVolume(m);
   EXPECT_GT(v, 0.9 * exact);
@@ -113,6 +113,25 @@ TEST(TubeGeometry, IsClosedAndWoundOutwards) {
   appendTube(helixTube(r), TubeOptions{}, h);
   expectClosed(h);
   EXPECT_GT(signedVolume(h), 0.0);
+}
+
+TEST(TubeGeometry, SubdivisionPassesThroughTheNodes) {
+  const double r = 0.2e-3;
+  const DrawTube t = helixTube(r);
+  TubeOptions o;
+  o.subdivisions = 3;
+  TriangleMesh m;
+  appendTube(t, o, m);
+  expectClosed(m);
+  const size_t firstBody = 1 + size_t(o.capRings - 1) * o.sides;
+  const size_t rings = (t.centre.size() - 1) * 4 + 1;
+  EXPECT_EQ(m.vertices.size(), rings * o.sides + 2 * (firstBody));
+  // Every fourth ring is centred on a node.
+  for (size_t i = 0; i < t.centre.size(); ++i) {
+    Vec3 centre = Vec3::Zero();
+    for (int j = 0; j < o.sides; ++j) centre += pos(m.vertices[firstBody + 4 * i * o.sides + j]);
+    EXPECT_LT((centre / o.sides - t.centre[i]).norm(), 1e-4 * r) << "node " << i;
+  }
 }
 
 TEST(TubeGeometry, PerNodeColoursAndMissingColours) {

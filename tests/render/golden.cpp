@@ -1,5 +1,6 @@
 #include "golden.h"
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
@@ -41,9 +42,10 @@ std::string outputDir() {
     return ::testing::AssertionSuccess();
   }
   render::writePng(diffPath, d.diff, error);
-  return ::testing::AssertionFailure() << name << " differs from " << goldenPath << ": " << summary
-                                       << " (allowed " << 100 * tol.maxFractionOff << "% off, mean "
-                                       << tol.maxMeanAbs << "); rendered " << actualPath << ", diff " << diffPath;
+  char allowed[96];
+  std::snprintf(allowed, sizeof allowed, "allowed %.2f%% off, mean %.2f", 100 * tol.maxFractionOff, tol.maxMeanAbs);
+  return ::testing::AssertionFailure() << name << " differs from " << goldenPath << ": " << summary << " ("
+                                       << allowed << "); rendered " << actualPath << ", diff (red) " << diffPath;
 }
 
 }  // namespace coilsim::testing

@@ -65,6 +65,19 @@ TEST(Session, AdvanceOnlyWhilePlaying) {
   EXPECT_NEAR(s.state().time, 0.01, 1e-12);
 }
 
+TEST(Session, StopsExactlyAtTheStopTime) {
+  const Model model = testing::straightRodModel();
+  Session s(model, makeState(model));
+  s.setStopTime(0.025);
+  s.setPlaying(true);
+  double clock = 0;
+  for (int frame = 0; frame < 10; ++frame) s.advance(1.0 / 60.0, [&] { return clock; });
+  EXPECT_TRUE(s.reachedStopTime());
+  EXPECT_FALSE(s.playing());
+  EXPECT_NEAR(s.state().time, 0.025, 1e-9);
+  EXPECT_TRUE(s.haltMessage().empty());
+}
+
 TEST(Session, HookAddsMeshesOnce) {
   const Model model = testing::helixModel();
   Session s(model, makeState(model), testing::decorateHelix);
