@@ -12,8 +12,8 @@ namespace {
 
 WindowInput* self(GLFWwindow* w) { return static_cast<WindowInput*>(glfwGetWindowUserPointer(w)); }
 
-void keyCallback(GLFWwindow* w, int key, int, int action, int mods) {
-  if (action == GLFW_PRESS || action == GLFW_REPEAT) self(w)->onKey(key, mods);
+void keyCallback(GLFWwindow* w, int key, int, int action, int) {
+  if (action == GLFW_PRESS || action == GLFW_REPEAT) self(w)->onKey(key);
 }
 
 void scrollCallback(GLFWwindow* w, double, double dy) { self(w)->onScroll(dy); }
@@ -38,7 +38,7 @@ WindowInput::WindowInput(GLFWwindow* window, Session& session, Views& views, Pan
   glfwSetScrollCallback(window_, scrollCallback);
 }
 
-void WindowInput::onKey(int key, int mods) {
+void WindowInput::onKey(int key) {
   if (!keyboardFree_) return;
   switch (key) {
     case GLFW_KEY_SPACE: session_.setPlaying(!session_.playing()); break;
@@ -58,14 +58,13 @@ void WindowInput::onKey(int key, int mods) {
     case GLFW_KEY_KP_SUBTRACT: views_.camera().zoom(1.0 / 1.15); break;
     default: break;
   }
-  (void)mods;
 }
 
 void WindowInput::onScroll(double dy) {
   if (mouseFree_) scroll_ += dy;
 }
 
-void WindowInput::update(double dt, bool imguiWantsMouse, bool imguiWantsKeyboard, int framebufferHeight) {
+void WindowInput::update(double dt, bool imguiWantsMouse, bool imguiWantsKeyboard) {
   keyboardFree_ = !imguiWantsKeyboard;
   mouseFree_ = !imguiWantsMouse;
   render::Camera& cam = views_.camera();
@@ -111,7 +110,6 @@ void WindowInput::update(double dt, bool imguiWantsMouse, bool imguiWantsKeyboar
         cam.orbit(-1.5 * h * dt, 1.0 * v * dt);
     }
   }
-  (void)framebufferHeight;
   gamepad(dt);
 }
 

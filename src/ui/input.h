@@ -17,13 +17,13 @@ class WindowInput {
  public:
   WindowInput(GLFWwindow* window, Session& session, Views& views, PanelContext& panel);
   // Applies this frame's input; ImGui's wishes keep the mouse or keys for it.
-  void update(double dt, bool imguiWantsMouse, bool imguiWantsKeyboard, int framebufferHeight);
+  void update(double dt, bool imguiWantsMouse, bool imguiWantsKeyboard);
   // F12 was pressed since the last call.
   bool screenshotRequested();
   std::string nextScreenshotName();
 
   // Called from the GLFW callbacks.
-  void onKey(int key, int mods);
+  void onKey(int key);
   void onScroll(double dy);
 
  private:

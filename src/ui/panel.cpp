@@ -164,7 +164,9 @@ void helpSection() {
 void drawPanel(Session& session, Views& views, PanelContext& ctx) {
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(float(ctx.sidebarWidth), io.DisplaySize.y), ImGuiCond_Always);
+  // sidebarWidth is in framebuffer pixels, ImGui works in window units (HiDPI).
+  const float scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
+  ImGui::SetNextWindowSize(ImVec2(float(ctx.sidebarWidth) / scale, io.DisplaySize.y), ImGuiCond_Always);
   const std::string title = "coilsim" + (ctx.sceneName.empty() ? std::string() : "  " + ctx.sceneName) + "###panel";
   ImGui::Begin(title.c_str(), nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   if (ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) simulationSection(session, ctx);
@@ -179,10 +181,12 @@ void drawPanel(Session& session, Views& views, PanelContext& ctx) {
 
 void drawViewLabels(const std::vector<render::ViewportInfo>& viewports, int frameHeight, const Views& views) {
   ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const ImVec2 fb = ImGui::GetIO().DisplayFramebufferScale;
+  const float sx = fb.x > 0 ? fb.x : 1.0f, sy = fb.y > 0 ? fb.y : 1.0f;
   for (const render::ViewportInfo& vp : viewports) {
     if (vp.label == "3D") continue;
-    // Viewports count from the bottom, ImGui from the top.
-    const float right = float(vp.x + vp.width) - 10.0f, top = float(frameHeight - (vp.y + vp.height)) + 8.0f;
+    // Viewports count pixels from the bottom, ImGui window units from the top.
+    const float right = float(vp.x + vp.width) / sx - 10.0f, top = float(frameHeight - (vp.y + vp.height)) / sy + 8.0f;
     char text[96];
     if (vp.label == "AP")
       std::snprintf(text, sizeof text, "%s  %+.0f\xc2\xb0 / %+.0f\xc2\xb0", vp.label.c_str(), views.rotationDeg(),

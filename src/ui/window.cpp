@@ -96,7 +96,7 @@ int runWindow(const Model& model, State& state, const ViewerOptions& options) {
     const double dt = now - last;
     last = now;
     const int fbw = backend->framebufferWidth(), fbh = backend->framebufferHeight();
-    input.update(dt, imgui.wantsMouse(), imgui.wantsKeyboard(), fbh);
+    input.update(dt, imgui.wantsMouse(), imgui.wantsKeyboard());
 
     panel.lastAdvance = session.advance(dt, wallSeconds);
 
