@@ -92,6 +92,13 @@ Model compileModel(const ModelDef& def) {
   m.newtonIterations = def.newtonIterations;
   m.health = def.health;
   m.effects = def.effects;
+  for (const Obstacle& o : def.obstacles) {
+    if (!o.mesh || o.mesh->triangles.empty())
+      throw std::invalid_argument("obstacle '" + o.name + "' has no triangles");
+    if (!(o.friction >= 0) || !std::isfinite(o.friction))
+      throw std::invalid_argument("obstacle '" + o.name + "' friction must be finite and >= 0");
+  }
+  m.obstacles = def.obstacles;
   for (const EffectUse& u : m.effects) {
     if (!u.effect) throw std::invalid_argument("effect use without an effect");
     const auto specs = u.effect->params();

@@ -11,6 +11,7 @@
 #include "physics/math.h"
 #include "physics/rest_shape.h"
 #include "physics/section.h"
+#include "physics/triangle_mesh.h"
 
 namespace coilsim {
 
@@ -99,6 +100,7 @@ struct ModelDef {
   int newtonIterations = 1;          // per dynamic step (1 = linearly implicit Euler)
   HealthLimits health;
   std::vector<EffectUse> effects;    // gravity is one of them
+  std::vector<Obstacle> obstacles;   // walls the rods may touch (contact effects read them)
 };
 
 struct Model {
@@ -109,6 +111,7 @@ struct Model {
   int newtonIterations = 1;
   HealthLimits health;
   std::vector<EffectUse> effects;
+  std::vector<Obstacle> obstacles;
 };
 
 // Builds element constants, lumped masses and placed rest shapes.
