@@ -1,0 +1,228 @@
+// coil-measurement/1 reader and writer; units convert only through units.h.
+#include "io/measurement.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "io/json_reader.h"
+#include "io/json_writer.h"
+#include "io/units.h"
+
+namespace coilsim::io {
+namespace {
+
+using validation::Measurement;
+using validation::RestShapeDef;
+using validation::Stage;
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+Vec3 vec(const JsonNode& n) {
+  const auto a = n.vec3(Bounds::any());
+  return Vec3(a[0], a[1], a[2]);
+}
+
+// A unit vector within a relative 1e-3 (files print a few digits).
+Vec3 unitVec(const JsonNode& n) {
+  const Vec3 v = vec(n);
+  if (std::abs(v.norm() - 1.0) > 1e-3) n.expected("a unit vector [x, y, z] (length 1 within 1e-3), got length " + fmt(v.norm()));
+  return v.normalized();
+}
+
+std::vector<Vec3> pointsMm(const JsonNode& n, std::string_view what) {
+  std::vector<Vec3> out;
+  for (const JsonNode& p : n.items(2, SIZE_MAX, what)) out.push_back(units::mmToM(1.0) * vec(p));
+  return out;
+}
+
+RestShapeDef readRest(const JsonNode& n, double lengthM) {
+  if (!n.isObject()) n.expected("an object with a \"type\": straight, helix or polyline");
+  RestShapeDef r;
+  const std::string type = n.child("type").oneOf({"straight", "helix", "polyline"});
+  if (type == "straight") return r;
+  if (type == "helix") {
+    r.type = RestShapeDef::Type::Helix;
+    r.loopDiameter = units::mmToM(n.child("loop_diameter_mm").number(Bounds::positive()));
+    r.pitch = units::mmToM(n.child("pitch_mm").number(Bounds::nonNegative()));
+    r.rightHanded = n.child("handedness").oneOf({"right", "left"}) == "right";
+    return r;
+  }
+  r.type = RestShapeDef::Type::Polyline;
+  const JsonNode pts = n.child("points_mm");
+  r.points = pointsMm(pts, "an array of at least 2 points [x, y, z] in mm, from the distal tip to the proximal end");
+  double arc = 0;
+  for (size_t i = 1; i < r.points.size(); ++i) arc += (r.points[i] - r.points[i - 1]).norm();
+  if (std::abs(arc - lengthM) > 0.01 * lengthM)
+    pts.fail("the polyline is " + fmt(units::mToMm(arc)) + " mm long but /coil/length_mm is " + fmt(units::mToMm(lengthM)) +
+             " mm; they must agree within 1 %");
+  if (auto t = n.optional("twist_deg_per_mm")) r.twistPerLength = units::degPerMmToRadPerM(t->number());
+  return r;
+}
+
+validation::CoilDef readCoil(const JsonNode& n) {
+  validation::CoilDef c;
+  if (!n.isObject()) n.expected("an object describing the coil");
+  c.length = units::mmToM(n.child("length_mm").number(Bounds::positive()));
+  c.wireRadius = units::mmToM(n.child("wire_radius_mm").number(Bounds::positive()));
+  const double area = M_PI * c.wireRadius * c.wireRadius;
+  const auto density = n.optional("density_g_cm3");
+  const auto mass = n.optional("mass_g");
+  if (!density && !mass) n.child("density_g_cm3").expected("a number > 0 (g/cm3), or \"mass_g\" instead");
+  if (density) c.massPerLength = units::gcm3ToKgm3(density->number(Bounds::positive())) * area;
+  if (mass) {
+    const double perLength = mass->number(Bounds::positive()) * 1e-3 / c.length;  // g -> kg
+    if (density && std::abs(perLength - c.massPerLength) > 0.01 * c.massPerLength)
+      mass->fail("mass_g and density_g_cm3 disagree by more than 1 % (" + fmt(perLength * c.length * 1e3) + " g vs " +
+                 fmt(c.massPerLength * c.length * 1e3) + " g); give one of them");
+    c.massPerLength = perLength;
+  }
+  c.rest = readRest(n.child("rest_shape"), c.length);
+  if (auto e = n.optional("young_modulus_gpa")) {
+    c.youngModulus = units::gpaToPa(e->number(Bounds::positive()));
+    c.hasYoungModulus = true;
+  }
+  if (auto nu = n.optional("poisson_ratio")) {
+    c.poissonRatio = nu->number({-1.0, 0.5, true, false, {}});
+    c.hasPoissonRatio = true;
+  }
+  return c;
+}
+
+Stage readStage(const JsonNode& n, double coilLength) {
+  if (!n.isObject()) n.expected("a stage object");
+  Stage s;
+  s.name = n.child("name").string();
+  const JsonNode l = n.child("deployed_length_mm");
+  s.deployed = units::mmToM(l.number(Bounds::positive()));
+  if (s.deployed > coilLength * (1 + 1e-9))
+    l.expected("a deployed length <= the coil length " + fmt(units::mToMm(coilLength)) + " mm");
+  if (auto t = n.optional("twist_deg")) s.twist = units::degToRad(t->number());
+  if (auto p = n.optional("point_sigma_mm")) s.pointSigma = units::mmToM(p->number(Bounds::nonNegative()));
+  s.centerline = pointsMm(n.child("centerline_mm"), "an array of at least 2 points [x, y, z] in mm, from the catheter tip outward");
+  if (auto h = n.optional("push_history")) {
+    double lastTime = -INFINITY;
+    for (const JsonNode& e : h->items(1, SIZE_MAX, "an array of [t_s, deployed_length_mm, twist_deg] samples")) {
+      const auto row = e.items(3, 3, "[t_s, deployed_length_mm, twist_deg]");
+      validation::PushSample p;
+      p.time = row[0].number();
+      if (!(p.time > lastTime)) row[0].expected("a time greater than the previous sample's (" + fmt(lastTime) + " s)");
+      lastTime = p.time;
+      p.deployed = units::mmToM(row[1].number(Bounds::closed(0, units::mToMm(coilLength), "mm")));
+      p.twist = units::degToRad(row[2].number());
+      s.pushHistory.push_back(p);
+    }
+    const JsonNode c = n.child("capture_time_s");
+    if (!c.exists()) c.expected("a capture time in s (required with push_history)");
+    s.captureTime = c.number(Bounds::closed(s.pushHistory.front().time, INFINITY, "s"));
+  }
+  return s;
+}
+
+Measurement fromDocument(const nlohmann::json& doc, const std::string& file) {
+  const JsonNode root(doc, file);
+  if (!root.isObject()) root.expected("a coil-measurement/1 object");
+  root.child("format").oneOf({"coil-measurement/1"});
+  Measurement m;
+  m.file = file;
+  m.name = root.child("name").string();
+  if (auto d = root.optional("description")) m.description = d->string(true);
+  m.coil = readCoil(root.child("coil"));
+
+  const JsonNode setup = root.child("setup");
+  if (!setup.isObject()) setup.expected("an object with gravity_m_s2 and catheter_tip");
+  m.gravity = vec(setup.child("gravity_m_s2"));
+  if (auto med = setup.optional("medium")) {
+    if (!med->isObject()) med->expected("an object {\"density_g_cm3\", \"viscosity_pa_s\"}");
+    m.mediumDensity = units::gcm3ToKgm3(med->child("density_g_cm3").number(Bounds::nonNegative()));
+    m.mediumViscosity = med->child("viscosity_pa_s").number(Bounds::nonNegative());
+  }
+  const JsonNode tip = setup.child("catheter_tip");
+  if (!tip.isObject()) tip.expected("an object {\"position_mm\", \"direction\", \"reference_normal\"}");
+  m.tip.position = units::mmToM(1.0) * vec(tip.child("position_mm"));
+  m.tip.direction = unitVec(tip.child("direction"));
+  const JsonNode normal = tip.child("reference_normal");
+  m.tip.normal = unitVec(normal);
+  if (std::abs(m.tip.normal.dot(m.tip.direction)) > 1e-3)
+    normal.expected("a unit vector orthogonal to /setup/catheter_tip/direction (|dot| <= 1e-3), got dot " +
+                    fmt(m.tip.normal.dot(m.tip.direction)));
+
+  for (const JsonNode& s : root.child("stages").items(1, SIZE_MAX, "an array of at least one stage"))
+    m.stages.push_back(readStage(s, m.coil.length));
+  return m;
+}
+
+}  // namespace
+
+Measurement parseMeasurement(std::string_view text, const std::string& file) {
+  return fromDocument(parseJson(text, file), file);
+}
+
+Measurement readMeasurement(const std::string& path) { return fromDocument(readJsonFile(path), path); }
+
+std::string formatMeasurement(const Measurement& m) {
+  using nlohmann::ordered_json;
+  auto mm = [](const Vec3& v) { return ordered_json::array({units::mToMm(v.x()), units::mToMm(v.y()), units::mToMm(v.z())}); };
+  auto round = [](double v, double q) { return std::round(v / q) * q; };
+  ordered_json j;
+  j["format"] = "coil-measurement/1";
+  j["name"] = m.name;
+  j["description"] = m.description;
+  ordered_json coil;
+  coil["length_mm"] = units::mToMm(m.coil.length);
+  coil["wire_radius_mm"] = units::mToMm(m.coil.wireRadius);
+  coil["mass_g"] = m.coil.massPerLength * m.coil.length * 1e3;
+  ordered_json rest;
+  switch (m.coil.rest.type) {
+    case RestShapeDef::Type::Straight: rest["type"] = "straight"; break;
+    case RestShapeDef::Type::Helix:
+      rest["type"] = "helix";
+      rest["loop_diameter_mm"] = units::mToMm(m.coil.rest.loopDiameter);
+      rest["pitch_mm"] = units::mToMm(m.coil.rest.pitch);
+      rest["handedness"] = m.coil.rest.rightHanded ? "right" : "left";
+      break;
+    case RestShapeDef::Type::Polyline:
+      rest["type"] = "polyline";
+      rest["points_mm"] = ordered_json::array();
+      for (const Vec3& p : m.coil.rest.points) rest["points_mm"].push_back(mm(p));
+      rest["twist_deg_per_mm"] = units::radToDeg(m.coil.rest.twistPerLength) * units::kMetresPerMm;
+      break;
+  }
+  coil["rest_shape"] = rest;
+  if (m.coil.hasYoungModulus) coil["young_modulus_gpa"] = units::paToGpa(m.coil.youngModulus);
+  if (m.coil.hasPoissonRatio) coil["poisson_ratio"] = m.coil.poissonRatio;
+  j["coil"] = coil;
+  ordered_json setup;
+  setup["gravity_m_s2"] = {m.gravity.x(), m.gravity.y(), m.gravity.z()};
+  setup["medium"] = {{"density_g_cm3", units::kgm3ToGcm3(m.mediumDensity)}, {"viscosity_pa_s", m.mediumViscosity}};
+  setup["catheter_tip"] = {{"position_mm", mm(m.tip.position)},
+                           {"direction", {m.tip.direction.x(), m.tip.direction.y(), m.tip.direction.z()}},
+                           {"reference_normal", {m.tip.normal.x(), m.tip.normal.y(), m.tip.normal.z()}}};
+  j["setup"] = setup;
+  j["stages"] = ordered_json::array();
+  for (const Stage& s : m.stages) {
+    ordered_json st;
+    st["name"] = s.name;
+    st["deployed_length_mm"] = units::mToMm(s.deployed);
+    st["twist_deg"] = units::radToDeg(s.twist);
+    if (s.pointSigma > 0) st["point_sigma_mm"] = units::mToMm(s.pointSigma);
+    st["centerline_mm"] = ordered_json::array();
+    for (const Vec3& p : s.centerline) {
+      const Vec3 q = units::mToMm(1.0) * p;
+      st["centerline_mm"].push_back({round(q.x(), 1e-5), round(q.y(), 1e-5), round(q.z(), 1e-5)});
+    }
+    if (s.dynamic()) {
+      st["push_history"] = ordered_json::array();
+      for (const auto& p : s.pushHistory)
+        st["push_history"].push_back({p.time, units::mToMm(p.deployed), units::radToDeg(p.twist)});
+      st["capture_time_s"] = s.captureTime;
+    }
+    j["stages"].push_back(st);
+  }
+  return formatJson(j);
+}
+
+}  // namespace coilsim::io
