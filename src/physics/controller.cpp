@@ -107,6 +107,7 @@ void DeploymentController::advance(const Deployment& dep, const Model& model, St
     notes.push_back("the coil is back inside the catheter");
   }
   if (!ds.detached && (deployed != ds.deployed || twist != ds.twist)) setDeployment(dep, model, state, ds, deployed, twist);
+  syncCatheterDrawing(dep, state);
 }
 
 TimelineRun runTimeline(const Deployment& dep, const Model& model, State& state, DeploymentState& ds,
