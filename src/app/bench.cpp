@@ -16,6 +16,10 @@
 #include "physics/integrator.h"
 #include "physics/model.h"
 
+#ifdef COILSIM_HAVE_UI
+#include "app/bench_render.h"
+#endif
+
 namespace coilsim {
 namespace {
 
@@ -168,6 +172,9 @@ int runBench(const std::vector<std::string>& args) {
     }
   fig.set("step_cost_ratio_n3000_over_n100_per_beam",
           fig.values["step_us_n3000"] / 3000.0 / (fig.values["step_us_n100"] / 100.0));
+#ifdef COILSIM_HAVE_UI
+  benchRenderFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
+#endif
   if (json) {
     std::printf("{");
     for (size_t i = 0; i < fig.order.size(); ++i)

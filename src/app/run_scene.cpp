@@ -151,13 +151,17 @@ Outcome simulateDeployment(const Deployment& dep, const Model& model, State& sta
     if (refused) record.warnings.push_back(source + ": " + entry);
   }
   record.deployment = ds;
+  record.catheterTip = catheterTip(dep, state, ds);
+  const std::string tipLine = dep.flexible() ? fmt(", catheter tip at %.3g deg", units::radToDeg(record.catheterTip->angle)) +
+                                                   fmt(", kickback %.4g mm", units::mToMm(record.catheterTip->kickback))
+                                             : std::string();
   std::string line = stepSummary(model, state, run.steps, steps, seconds) + "; coil " +
                      fmt("%.6g", units::mToMm(ds.deployed)) + " of " + fmt("%.6g", units::mToMm(dep.coilLength)) +
                      " mm out, twist " + fmt("%.6g", units::radToDeg(ds.twist)) + " deg" +
                      (ds.detached ? ", detached" : "") +
                      (ds.tipOffset != 0 ? ", catheter retracted " + fmt("%.6g", units::mToMm(ds.tipOffset)) + " mm"
                                         : std::string()) +
-                     "; state " + io::stateHash(state);
+                     tipLine + "; state " + io::stateHash(state);
   if (run.ok) return {true, line};
   record.status = "step_refused";
   record.error = stepError.empty() ? "a step was refused" : stepError;
@@ -237,11 +241,7 @@ int run(const RunOptions& o) {
   record.warnings = spec.warnings;
   for (const std::string& w : spec.warnings) std::fprintf(stderr, "coilsim: warning: %s\n", w.c_str());
 
-  bool window = !o.headless && haveDisplay();
-  if (window && !o.input.empty()) {
-    std::fprintf(stderr, "coilsim: the window does not play timelines yet: running %s off-screen\n", o.input.c_str());
-    window = false;
-  }
+  const bool window = !o.headless && haveDisplay();
   if (window) {
 #ifdef COILSIM_HAVE_UI
     if (spec.solve == io::SolveMode::Static) {
@@ -254,8 +254,14 @@ int run(const RunOptions& o) {
     v.windowScreenshotPath = o.screenshot;
     if (o.steps) v.runSeconds = double(*o.steps) * model.timeStep;
     if (o.durationS) v.runSeconds = *o.durationS;
+    // The window plays the timeline as the headless run does (ui::Session).
+    if (compiled.deployment) v.deployment = ui::DeploymentSetup{*compiled.deployment, deployment, timeline};
+    v.finalDeployment = &deployment;
     const int code = ui::runWindow(model, state, v);
-    if (compiled.deployment) record.deployment = deployment;
+    if (compiled.deployment) {
+      record.deployment = deployment;
+      record.catheterTip = catheterTip(*compiled.deployment, state, deployment);
+    }
     return writeOut(o, model, state, record) ? code : kExitUsage;
 #else
     return usageError("this coilsim was built without the ui layer, so it cannot open a window; run with --headless "
@@ -282,7 +288,9 @@ int run(const RunOptions& o) {
   if (!o.screenshot.empty()) {
 #ifdef COILSIM_HAVE_UI
     std::string error;
-    if (!ui::renderOffscreen(model, state, viewerOptions(o), error)) {
+    ui::ViewerOptions v = viewerOptions(o);
+    if (compiled.deployment) v.deployment = ui::DeploymentSetup{*compiled.deployment, deployment, {}};
+    if (!ui::renderOffscreen(model, state, v, error)) {
       std::fprintf(stderr, "coilsim: screenshot %s failed: %s\n", o.screenshot.c_str(), error.c_str());
       return kExitFailure;
     }

@@ -6,6 +6,19 @@
 
 namespace coilsim::ui {
 
+render::Bounds sceneBounds(const Session& session) {
+  render::Bounds b = render::boundsOf(session.drawData());
+  const Deployment* dep = session.deployment();
+  if (!dep || dep->restX.empty()) return b;
+  // Where the coil will go: its whole rest shape leaving the tip in the tip's
+  // frame (a helix is screw-symmetric, so every partly deployed rest shape
+  // lies on it). The camera then frames the deployment from the start, and
+  // the window and a headless screenshot of the same state look alike.
+  const Quat c = dep->tip.rotation() * dep->restF.front().conjugate();
+  for (const Vec3& p : dep->restX) b.add(dep->tip.position + c * (p - dep->restX.front()), dep->section.radius);
+  return b;
+}
+
 int sidebarWidth(const FrameParts& p, int width) {
   if (!p.drawPanel) return 0;
   return std::min(std::clamp(int(0.3 * width), 300, 380), width / 2);
@@ -15,13 +28,14 @@ bool drawFrame(FrameParts& p, int width, int height, double dt, std::string& err
   // The panel is a sidebar on the left; the scene fills the rest.
   p.panel.sidebarWidth = sidebarWidth(p, width);
   const render::Rect area{p.panel.sidebarWidth, 0, width - p.panel.sidebarWidth, height};
-  const render::Bounds bounds = render::boundsOf(p.session.drawData());
+  const render::Bounds bounds = sceneBounds(p.session);
   p.views.fitIfNew(bounds, area.width, area.height);
   if (p.panel.fitRequested) {
     p.views.fit(bounds, area.width, area.height);
     p.panel.fitRequested = false;
   }
   p.settings.mode = p.views.mode();
+  p.settings.drawPoints = p.panel.overlays.contacts;
   if (!p.renderer.render(p.session.drawData(), p.views.camera(), p.settings, width, height, area, error))
     return false;
   p.imgui.newFrame(width, height, dt);

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/units.h"
+
 namespace coilsim::ui {
 namespace {
 
@@ -45,7 +47,11 @@ void WindowInput::onKey(int key) {
     case GLFW_KEY_N:
       if (!session_.playing()) session_.stepOnce();
       break;
-    case GLFW_KEY_R: session_.reset(); break;
+    case GLFW_KEY_R:
+      session_.reset();
+      device_.clear();
+      break;
+    case GLFW_KEY_D: panel_.device.confirmDetach = true; break;
     case GLFW_KEY_1: views_.setMode(render::ViewMode::Shaded); break;
     case GLFW_KEY_2: views_.setMode(render::ViewMode::XRay); break;
     case GLFW_KEY_3: views_.setMode(render::ViewMode::Biplane); break;
@@ -61,7 +67,10 @@ void WindowInput::onKey(int key) {
 }
 
 void WindowInput::onScroll(double dy) {
-  if (mouseFree_) scroll_ += dy;
+  if (!mouseFree_) return;
+  const bool ctrl = glfwGetKey(window_, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS ||
+                    glfwGetKey(window_, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
+  (ctrl ? twistSteps_ : scroll_) += dy;
 }
 
 void WindowInput::update(double dt, bool imguiWantsMouse, bool imguiWantsKeyboard) {
@@ -110,29 +119,55 @@ void WindowInput::update(double dt, bool imguiWantsMouse, bool imguiWantsKeyboar
         cam.orbit(-1.5 * h * dt, 1.0 * v * dt);
     }
   }
-  gamepad(dt);
+  // The device: held keys and the gamepad's levers, Ctrl + wheel in steps.
+  double push = 0, twist = 0;
+  gamepad(dt, push, twist);
+  if (keyboardFree_) {
+    auto held = [&](int key) { return glfwGetKey(window_, key) == GLFW_PRESS ? 1.0 : 0.0; };
+    push += held(GLFW_KEY_P) - held(GLFW_KEY_O);
+    twist += held(GLFW_KEY_E) - held(GLFW_KEY_Q);
+  }
+  device_.update(session_, panel_.device, push, twist);
+  if (twistSteps_ != 0) {
+    const double angle = units::degToRad(panel_.device.twistStepDeg) * twistSteps_;
+    DeviceCommand c;
+    c.kind = DeviceCommand::Kind::Twist;
+    c.rate = std::copysign(units::degPerSToRadPerS(panel_.device.twistRateDegS), angle);
+    c.amount = std::abs(angle);
+    session_.command(c);
+    twistSteps_ = 0;
+  }
 }
 
-void WindowInput::gamepad(double dt) {
+void WindowInput::gamepad(double dt, double& push, double& twist) {
   for (int jid = GLFW_JOYSTICK_1; jid <= GLFW_JOYSTICK_LAST; ++jid) {
     GLFWgamepadstate pad;
     if (!glfwJoystickIsGamepad(jid) || !glfwGetGamepadState(jid, &pad)) continue;
     render::Camera& cam = views_.camera();
-    cam.orbit(-2.0 * dt * deadzone(pad.axes[GLFW_GAMEPAD_AXIS_LEFT_X]),
-              -1.5 * dt * deadzone(pad.axes[GLFW_GAMEPAD_AXIS_LEFT_Y]));
-    cam.pan(0.6 * dt * deadzone(pad.axes[GLFW_GAMEPAD_AXIS_RIGHT_X]),
-            -0.6 * dt * deadzone(pad.axes[GLFW_GAMEPAD_AXIS_RIGHT_Y]));
-    // Triggers rest at -1: map to 0..1.
+    // Left stick: orbit, or pan while LB is held.
+    const double lx = deadzone(pad.axes[GLFW_GAMEPAD_AXIS_LEFT_X]), ly = deadzone(pad.axes[GLFW_GAMEPAD_AXIS_LEFT_Y]);
+    if (pad.buttons[GLFW_GAMEPAD_BUTTON_LEFT_BUMPER] == GLFW_PRESS)
+      cam.pan(0.6 * dt * lx, -0.6 * dt * ly);
+    else
+      cam.orbit(-2.0 * dt * lx, -1.5 * dt * ly);
+    // Right stick: x twists the coil, y zooms.
+    twist = deadzone(pad.axes[GLFW_GAMEPAD_AXIS_RIGHT_X]);
+    const double zoom = -deadzone(pad.axes[GLFW_GAMEPAD_AXIS_RIGHT_Y]);
+    if (zoom != 0) cam.zoom(std::pow(3.0, dt * zoom));
+    // Triggers rest at -1: map to 0..1; right pushes, left pulls.
     const double in = 0.5 * (pad.axes[GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER] + 1.0);
     const double out = 0.5 * (pad.axes[GLFW_GAMEPAD_AXIS_LEFT_TRIGGER] + 1.0);
-    if (in - out != 0) cam.zoom(std::pow(3.0, dt * (deadzone(in) - deadzone(out))));
+    push = deadzone(in) - deadzone(out);
     auto pressed = [&](int b) { return pad.buttons[b] == GLFW_PRESS && buttons_[b] != GLFW_PRESS; };
     if (pressed(GLFW_GAMEPAD_BUTTON_A)) session_.setPlaying(!session_.playing());
-    if (pressed(GLFW_GAMEPAD_BUTTON_B)) session_.reset();
+    if (pressed(GLFW_GAMEPAD_BUTTON_B)) {
+      session_.reset();
+      device_.clear();
+    }
     if (pressed(GLFW_GAMEPAD_BUTTON_X)) panel_.fitRequested = true;
     if (pressed(GLFW_GAMEPAD_BUTTON_Y)) views_.setMode(nextMode(views_.mode()));
     for (int b = 0; b <= GLFW_GAMEPAD_BUTTON_LAST; ++b) buttons_[b] = pad.buttons[b];
-    return;  // the first gamepad found drives the view
+    return;  // the first gamepad found drives the view and the device
   }
 }
 

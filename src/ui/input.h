@@ -5,6 +5,7 @@
 // are polled once per frame.
 #include <string>
 
+#include "ui/device_input.h"
 #include "ui/panel.h"
 #include "ui/session.h"
 #include "ui/views.h"
@@ -27,7 +28,8 @@ class WindowInput {
   void onScroll(double dy);
 
  private:
-  void gamepad(double dt);
+  // Returns the gamepad's device levers (push, twist), zero without one.
+  void gamepad(double dt, double& push, double& twist);
 
   GLFWwindow* window_;
   Session& session_;
@@ -40,6 +42,8 @@ class WindowInput {
   bool screenshot_ = false;
   int screenshots_ = 0;
   unsigned char buttons_[15] = {};  // gamepad buttons last frame
+  DeviceInput device_;
+  double twistSteps_ = 0;  // Ctrl + wheel notches not yet sent
 };
 
 }  // namespace coilsim::ui

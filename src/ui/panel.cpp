@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/units.h"
 #include "physics/integrator.h"
 
 namespace coilsim::ui {
@@ -111,6 +112,22 @@ void viewSection(Views& views, PanelContext& ctx) {
   }
 }
 
+void overlaySection(Session& session, PanelContext& ctx) {
+  Overlays& o = ctx.overlays;
+  ImGui::Checkbox("colour by bending moment", &o.colourByMoment);
+  if (o.colourByMoment) {
+    ImGui::Indent();
+    ImGui::TextDisabled("red at [N mm] (0: the largest)");
+    ImGui::SetNextItemWidth(-1.0f);
+    const double lo = 0, hi = 10;
+    ImGui::SliderScalar("##moment", ImGuiDataType_Double, &o.momentScaleNmm, &lo, &hi, "%.3f");
+    ImGui::Text("largest %.4f N mm", units::nmToNmm(session.largestMoment()));
+    ImGui::Unindent();
+  }
+  session.setMomentColouring(o.colourByMoment, units::nmmToNm(o.momentScaleNmm));
+  ImGui::Checkbox("contact points and forces (3D)", &o.contacts);
+}
+
 void effectsSection(Session& session) {
   Model& m = session.model();
   if (m.effects.empty()) ImGui::TextDisabled("no effects in this scene");
@@ -151,12 +168,18 @@ void helpSection() {
       "wheel, +/-      zoom\n"
       "arrows          orbit, shift: pan\n"
       "Space N R       play/pause, step, reset\n"
+      "P / O held      push / pull the coil\n"
+      "Q / E held      twist left / right\n"
+      "Ctrl + wheel    twist by steps\n"
+      "D               detach (asks first)\n"
       "1 2 3           3D, X-ray, biplane\n"
       "F               fit to scene\n"
       "F12             screenshot (coilsim-N.png)\n"
       "Esc             close\n"
-      "gamepad         sticks orbit/pan, triggers zoom,\n"
-      "                A play/pause, B reset, Y view");
+      "gamepad         triggers push / pull, right stick\n"
+      "                x twists, y zooms; left stick\n"
+      "                orbits (pans with LB); A play/\n"
+      "                pause, B reset, X fit, Y view");
 }
 
 }  // namespace
@@ -170,10 +193,11 @@ void drawPanel(Session& session, Views& views, PanelContext& ctx) {
   const std::string title = "coilsim" + (ctx.sceneName.empty() ? std::string() : "  " + ctx.sceneName) + "###panel";
   ImGui::Begin(title.c_str(), nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   if (ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) simulationSection(session, ctx);
-  if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) viewSection(views, ctx);
-  if (ImGui::CollapsingHeader("Effects", ImGuiTreeNodeFlags_DefaultOpen)) effectsSection(session);
   // Deployment controls (push / pull / twist / detach): see deployment_panel.cpp.
-  if (ImGui::CollapsingHeader("Deployment", ImGuiTreeNodeFlags_DefaultOpen)) drawDeploymentControls(session);
+  if (ImGui::CollapsingHeader("Deployment", ImGuiTreeNodeFlags_DefaultOpen)) drawDeploymentControls(session, ctx);
+  if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) viewSection(views, ctx);
+  if (ImGui::CollapsingHeader("Colours and markers")) overlaySection(session, ctx);
+  if (ImGui::CollapsingHeader("Effects", ImGuiTreeNodeFlags_DefaultOpen)) effectsSection(session);
   if (ctx.interactive && ImGui::CollapsingHeader("Mouse, keys, gamepad")) helpSection();
   if (!ctx.glInfo.empty() && ctx.interactive) ImGui::TextDisabled("%s", ctx.glInfo.c_str());
   ImGui::End();

@@ -11,6 +11,24 @@
 
 namespace coilsim::ui {
 
+// The device controls' settings, in the panel's units (shared with the
+// keys and the gamepad, which push at the same speed).
+struct DeviceControls {
+  double pushSpeedMmS = 2.0;     // mm/s, push and pull (hold P / O)
+  double twistRateDegS = 180.0;  // deg/s, twist (hold Q / E)
+  double twistStepDeg = 15.0;    // deg per wheel notch with Ctrl
+  double retractSpeedMmS = 1.0;  // mm/s, catheter retraction
+  bool confirmDetach = false;    // the detach confirmation is open
+};
+
+// Colours and markers drawn on request (the moment colouring itself lives
+// in the Session, which owns the draw data).
+struct Overlays {
+  bool colourByMoment = false;
+  double momentScaleNmm = 0;  // N mm shown fully red; 0: the largest in the picture
+  bool contacts = true;       // contact points and force arrows (3D view)
+};
+
 // What the panel shows besides the session, and what it asks for.
 struct PanelContext {
   std::string sceneName;        // shown in the title
@@ -20,6 +38,8 @@ struct PanelContext {
   FrameAdvance lastAdvance;     // what the real-time loop did this frame
   std::string glInfo;           // GL version and renderer
   int sidebarWidth = 360;       // pixels, the panel's column at the left
+  DeviceControls device;
+  Overlays overlays;
   // Requests, handled by the caller after the frame.
   bool fitRequested = false;
   bool closeRequested = false;
@@ -31,6 +51,6 @@ void drawPanel(Session& session, Views& views, PanelContext& context);
 void drawViewLabels(const std::vector<render::ViewportInfo>& viewports, int frameHeight, const Views& views);
 
 // The deployment section (push, pull, twist, detach), see deployment_panel.cpp.
-void drawDeploymentControls(Session& session);
+void drawDeploymentControls(Session& session, PanelContext& context);
 
 }  // namespace coilsim::ui

@@ -2,6 +2,7 @@
 // Render performance for `coilsim bench`: frames per second of the 3D and
 // X-ray views off-screen (OSMesa), and how a real-time frame divides between
 // physics and drawing.
+#include <optional>
 #include <string>
 
 #include "physics/model.h"
@@ -20,6 +21,9 @@ struct RenderBenchOptions {
   // time at 60 frames per second: round(1 / (60 * model.timeStep)), at least 1.
   int stepsPerFrame = 0;
   DrawDataHook addDrawData;        // optional vessel meshes / markers, as in ViewerOptions
+  // Optional deployment; its timeline drives the stepping measurement (e.g.
+  // a push from t = 0, so physics slides the coil as in use).
+  std::optional<DeploymentSetup> deployment;
 };
 
 struct RenderBenchResult {

@@ -1,5 +1,9 @@
 #include "ui/session.h"
 
+#include <cstdio>
+
+#include "ui/node_colours.h"
+
 namespace coilsim::ui {
 
 Session::Session(const Model& model, const State& state, DrawDataHook hook)
@@ -18,7 +22,60 @@ void Session::setPlaying(bool playing) {
   playing_ = playing;
 }
 
+void Session::attachDeployment(const DeploymentSetup& setup) {
+  deploymentSetup_ = setup;
+  restartDevice();
+}
+
+void Session::restartDevice() {
+  deploymentState_ = deploymentSetup_->initial;
+  controller_ = DeploymentController();
+  timelineNext_ = 0;
+  deviceSteps_ = 0;
+  deviceMessages_.clear();
+}
+
+void Session::note(const std::string& message) {
+  char t[48];
+  std::snprintf(t, sizeof t, "t = %.3f s: ", state_.time);
+  deviceMessages_.push_back(t + message);
+  while (deviceMessages_.size() > 8) deviceMessages_.pop_front();
+}
+
+std::string Session::command(const DeviceCommand& c) {
+  if (!deploymentSetup_) {
+    const std::string why = "refused: this scene has no deployment (no coil in a catheter to drive)";
+    note(why);
+    return why;
+  }
+  const std::string why = controller_.command(deploymentSetup_->deployment, deploymentState_, c);
+  if (!why.empty()) note(why);
+  return why;
+}
+
+// What runTimeline does before each step, in the same order, so that a
+// window run and a headless run of one timeline reach the same state.
+void Session::driveDevice() {
+  if (!deploymentSetup_) return;
+  const Deployment& dep = deploymentSetup_->deployment;
+  const std::vector<TimedCommand>& timeline = deploymentSetup_->timeline;
+  const double dt = model_.timeStep;
+  const double t = double(deviceSteps_) * dt;
+  while (timelineNext_ < timeline.size() && timeline[timelineNext_].time <= t + 1e-9 * dt) {
+    const std::string why = controller_.command(dep, deploymentState_, timeline[timelineNext_].command);
+    if (!why.empty()) note("timeline /commands/" + std::to_string(timelineNext_) + ": " + why);
+    ++timelineNext_;
+  }
+  controller_.advance(dep, model_, state_, deploymentState_, dt);
+  for (const std::string& n : controller_.notes) note(n);
+  controller_.notes.clear();
+}
+
 bool Session::stepAndCheck() {
+  // The device moves between steps; a refused step restores the poses but
+  // not the slid coil, exactly as in runTimeline, which stops there too.
+  driveDevice();
+  ++deviceSteps_;
   const StepReport r = step(model_, state_);
   if (!r.ok()) {
     // step() restored the state; stepping again would fail the same way.
@@ -51,6 +108,7 @@ long Session::stepMany(int count) {
 
 void Session::reset() {
   state_ = initial_;
+  if (deploymentSetup_) restartDevice();
   haltMessage_.clear();
   loop_.reset();
   steps_ = 0;
@@ -85,6 +143,14 @@ void Session::refreshDrawData() {
   draw_.points.clear();
   fillDrawData(model_, state_, draw_);
   if (hook_) hook_(model_, state_, draw_);
+  largestMoment_ = colourByMoment_ ? colourByBendingMoment(state_, momentScale_, draw_) : 0.0;
+}
+
+void Session::setMomentColouring(bool on, double scale) {
+  if (on == colourByMoment_ && scale == momentScale_) return;
+  colourByMoment_ = on;
+  momentScale_ = scale;
+  refreshDrawData();
 }
 
 }  // namespace coilsim::ui

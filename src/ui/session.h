@@ -4,9 +4,14 @@
 // reset), the current State, the real-time loop, and the draw data of the
 // last healthy state. A refused step (blow-up) pauses the simulation and is
 // reported, never drawn. GL-free, tested in tests/ui.
+#include <deque>
 #include <functional>
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "physics/controller.h"
+#include "physics/deployment.h"
 #include "physics/draw_data.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
@@ -17,6 +22,16 @@ namespace coilsim::ui {
 
 // Adds what the core does not fill (vessel meshes, markers) to draw data.
 using DrawDataHook = std::function<void(const Model&, const State&, DrawData&)>;
+
+// A coil deployment the session drives: its constants, its state at the
+// start (reset returns there) and an optional timeline of device commands,
+// played exactly as runTimeline plays it headless (a command starts at the
+// first step whose start time, step index * dt, is at or after its time).
+struct DeploymentSetup {
+  Deployment deployment;
+  DeploymentState initial;
+  std::vector<TimedCommand> timeline;
+};
 
 class Session {
  public:
@@ -44,6 +59,23 @@ class Session {
   void setStopTime(double seconds) { stopTime_ = seconds; }
   bool reachedStopTime() const;
 
+  // The deployment (push, pull, twist, detach, retract), if the scene has
+  // one. Call before the first step.
+  void attachDeployment(const DeploymentSetup& setup);
+  bool hasDeployment() const { return deploymentSetup_.has_value(); }
+  const Deployment* deployment() const { return deploymentSetup_ ? &deploymentSetup_->deployment : nullptr; }
+  const DeploymentState& deploymentState() const { return deploymentState_; }
+  const DeploymentController& controller() const { return controller_; }
+  // Starts a device command now (it acts from the next step on). Returns ""
+  // or the controller's reason for refusing it; refusals also go to the
+  // message list. Without a deployment every command is refused.
+  std::string command(const DeviceCommand& command);
+  // Refusals and limits reached ("the coil is fully deployed"), newest last,
+  // each with the simulated time; at most the last 8.
+  const std::deque<std::string>& deviceMessages() const { return deviceMessages_; }
+  // Timeline commands already started.
+  size_t timelineCursor() const { return timelineNext_; }
+
   // Why stepping stopped (a refused step), empty while healthy.
   const std::string& haltMessage() const { return haltMessage_; }
   const RealTimeLoop& loop() const { return loop_; }
@@ -58,8 +90,18 @@ class Session {
   bool showingOlderState() const { return stale_; }
   void refreshDrawData();
 
+  // Colours the rods by bending moment (node_colours.h): `scale` N m is
+  // fully red, <= 0 the largest. Off: the role colours (or the hook's).
+  void setMomentColouring(bool on, double scale);
+  bool momentColouring() const { return colourByMoment_; }
+  // The largest bending moment in the picture when colouring by it, N m.
+  double largestMoment() const { return largestMoment_; }
+
  private:
   bool stepAndCheck();
+  void driveDevice();
+  void restartDevice();
+  void note(const std::string& message);
 
   Model model_;
   State initial_;
@@ -72,6 +114,15 @@ class Session {
   long steps_ = 0;
   double stopTime_ = -1;
   std::string haltMessage_;
+  std::optional<DeploymentSetup> deploymentSetup_;
+  DeploymentState deploymentState_;
+  DeploymentController controller_;
+  size_t timelineNext_ = 0;
+  long deviceSteps_ = 0;  // steps since the start, the timeline's clock
+  std::deque<std::string> deviceMessages_;
+  bool colourByMoment_ = false;
+  double momentScale_ = 0;
+  double largestMoment_ = 0;
 };
 
 }  // namespace coilsim::ui

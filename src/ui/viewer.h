@@ -2,11 +2,13 @@
 // The graphical front end as the CLI sees it: an interactive window (GLFW)
 // and an off-screen render to PNG (OSMesa), both drawing the same scene.
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "physics/draw_data.h"
 #include "physics/model.h"
 #include "physics/state.h"
+#include "ui/session.h"
 
 namespace coilsim::ui {
 
@@ -25,6 +27,12 @@ struct ViewerOptions {
   // Optional: adds to the draw data what the core does not fill (vessel
   // meshes, contact or validation markers), called whenever the state changes.
   std::function<void(const Model&, const State&, DrawData&)> addDrawData;
+  // The scene's coil deployment, driven from the panel, keys and gamepad,
+  // and by its timeline (played as `coilsim run --headless` plays it). Its
+  // `initial` must match the State passed in (after initDeployment).
+  std::optional<DeploymentSetup> deployment;
+  // Set by runWindow on return: the deployment's state when the window closed.
+  DeploymentState* finalDeployment = nullptr;
 };
 
 // Opens the window and runs the real-time loop until the user closes it (or

@@ -66,6 +66,7 @@ int runWindow(const Model& model, State& state, const ViewerOptions& options) {
   }
 
   Session session(model, state, options.addDrawData);
+  if (options.deployment) session.attachDeployment(*options.deployment);
   Views views(*mode);
   PanelContext panel;
   panel.sceneName = options.scenePath;
@@ -137,6 +138,7 @@ int runWindow(const Model& model, State& state, const ViewerOptions& options) {
     backend->present();
   }
   state = session.state();
+  if (options.finalDeployment && session.hasDeployment()) *options.finalDeployment = session.deploymentState();
   return exitCode;
 }
 

@@ -24,4 +24,18 @@ inline long countCoilPixels(const render::Image& image, int x0 = 0) {
   return n;
 }
 
+// Where the coil-like pixels with x >= x0 are: their count and centroid.
+struct CoilSpot {
+  long count = 0;
+  double x = 0, y = 0;  // pixels, first row at the top
+};
+inline CoilSpot coilSpot(const render::Image& image, int x0 = 0) {
+  CoilSpot s;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = std::max(x0, 0); x < image.width; ++x)
+      if (looksLikeCoil(image.at(x, y))) ++s.count, s.x += x, s.y += y;
+  if (s.count) s.x /= double(s.count), s.y /= double(s.count);
+  return s;
+}
+
 }  // namespace coilsim::testing

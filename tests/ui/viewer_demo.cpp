@@ -1,6 +1,7 @@
 // A small driver of the ui layer on inline scenes, until the CLI calls it:
 // opens the window (scripts/window-test runs it under Xvfb), renders
 // off-screen, runs the render benchmark, and checks a window screenshot.
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -25,7 +26,9 @@ int usage() {
                "                                      [--no-panel]\n"
                "       coilsim_viewer_demo bench     [--scene helix|rod] [--size WxH] [--frames N]\n"
                "       (all but check-coil: [--samples N] multisampling of the 3D view)\n"
-               "       coilsim_viewer_demo check-coil PATH [--min N] [--from-x X]\n");
+               "       coilsim_viewer_demo check-coil PATH [--min N] [--from-x X]\n"
+               "       coilsim_viewer_demo compare-coil WINDOW.png REFERENCE.png [--min N] [--from-x X]\n"
+               "                                      [--max-shift PX]\n");
   return 2;
 }
 
@@ -41,6 +44,7 @@ int main(int argc, char** argv) {
   double seconds = -1;
   long minPixels = 300;
   int fromX = 400;
+  double maxShift = 12;
   bool paused = false, panel = true;
   std::vector<std::string> positional;
   for (int i = 2; i < argc; ++i) {
@@ -61,6 +65,7 @@ int main(int argc, char** argv) {
     else if (a == "--samples") samples = std::atoi(next().c_str());
     else if (a == "--min") minPixels = std::atol(next().c_str());
     else if (a == "--from-x") fromX = std::atoi(next().c_str());
+    else if (a == "--max-shift") maxShift = std::atof(next().c_str());
     else if (a == "--paused") paused = true;
     else if (a == "--no-panel") panel = false;
     else if (!a.empty() && a[0] != '-') positional.push_back(a);
@@ -79,6 +84,27 @@ int main(int argc, char** argv) {
     std::printf("%s: %dx%d, %ld coil-coloured pixels right of x = %d (need %ld)\n", positional[0].c_str(), image.width,
                 image.height, n, fromX, minPixels);
     return n >= minPixels ? 0 : 1;
+  }
+
+  // The window's picture of a pushed coil against the headless picture of
+  // the same run: the coil must be there, as large, in the same place.
+  if (command == "compare-coil") {
+    if (positional.size() != 2) return usage();
+    render::Image shot, ref;
+    std::string error;
+    if (!render::readPng(positional[0], shot, error) || !render::readPng(positional[1], ref, error)) {
+      std::fprintf(stderr, "%s\n", error.c_str());
+      return 1;
+    }
+    const testing::CoilSpot a = testing::coilSpot(shot, fromX), b = testing::coilSpot(ref, fromX);
+    const double shift = std::hypot(a.x - b.x, a.y - b.y);
+    std::printf("coil pixels right of x = %d: window %ld at (%.1f, %.1f), reference %ld at (%.1f, %.1f): "
+                "%.1f px apart (at most %.1f), count ratio %.2f (0.6 to 1.6), need %ld\n",
+                fromX, a.count, a.x, a.y, b.count, b.x, b.y, shift, maxShift,
+                b.count ? double(a.count) / double(b.count) : 0.0, minPixels);
+    const bool ok = a.count >= minPixels && b.count >= minPixels && shift <= maxShift &&
+                    double(a.count) >= 0.6 * double(b.count) && double(a.count) <= 1.6 * double(b.count);
+    return ok ? 0 : 1;
   }
 
   const bool helix = scene == "helix";
