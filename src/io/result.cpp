@@ -77,6 +77,12 @@ nlohmann::ordered_json resultJson(const Model& model, const State& state, const 
                          {"twist_deg", units::radToDeg(d.twist)},
                          {"detached", d.detached},
                          {"tip_offset_mm", units::mToMm(d.tipOffset)}};
+    if (run.catheterTip) {
+      // Kickback: how far the tip went back along its initial exit direction.
+      out["deployment"]["catheter_kickback_mm"] = units::mToMm(run.catheterTip->kickback);
+      out["deployment"]["catheter_tip_angle_deg"] = units::radToDeg(run.catheterTip->angle);
+      out["deployment"]["catheter_rest_tip_angle_deg"] = units::radToDeg(run.catheterTip->restAngle);
+    }
   }
   const Energy e = computeEnergy(model, state);
   out["energy"] = {{"kinetic_J", e.kinetic}, {"elastic_J", e.elastic}, {"potential_J", e.potential},

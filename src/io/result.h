@@ -27,6 +27,7 @@ struct RunRecord {
   std::optional<StaticReport> statics;  // static solves only
   std::vector<std::string> warnings;    // scene warnings and refused commands; the state's are added
   std::optional<DeploymentState> deployment;  // scenes with a deployment
+  std::optional<CatheterTip> catheterTip;     // its catheter tip (kickback, angle), when there is one
 };
 
 // FNV-1a 64-bit over the raw bytes of every rod's x, q, v, w (all nodes, rod

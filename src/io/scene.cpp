@@ -89,6 +89,18 @@ void checkDeployment(const SceneSpec& s, const DeploymentSpec& d) {
     fail(s, at + "/catheter/reference_normal",
          "expected a vector orthogonal to direction; the angle between them is " +
              fmt(units::radToDeg(std::acos(std::clamp(cosine, -1.0, 1.0)))) + " deg");
+  if (c.flexible) {
+    if (!(c.innerDiameterMm < c.outerDiameterMm))
+      fail(s, at + "/catheter/inner_diameter_mm",
+           "expected less than outer_diameter_mm (" + fmt(c.outerDiameterMm) + " mm), got " + fmt(c.innerDiameterMm) +
+               " mm");
+    const CatheterShape shape{c.rest.type, units::degToRad(c.rest.angleDeg), units::mmToM(c.rest.radiusMm)};
+    const double bendsMm = units::mToMm(shape.bendLength());
+    if (!(bendsMm <= c.freeLengthMm * (1 + 1e-9)))
+      fail(s, at + "/catheter/rest_shape",
+           "the bends take " + fmt(bendsMm) + " mm of arc (angle x radius) but free_length_mm is " +
+               fmt(c.freeLengthMm) + " mm; shorten the radius or lengthen the free part");
+  }
   const std::vector<std::string> names = deploymentRodNames(d);
   for (size_t k = 0; k < s.rods.size(); ++k)
     for (const std::string& name : names)
@@ -174,6 +186,19 @@ DeploymentDef compileDeployment(const SceneSpec& s, const DeploymentSpec& d) {
   def.tip.direction = d.catheter.direction;
   def.tip.normal = d.catheter.referenceNormal;
   def.catheterOuterRadius = 0.5 * mmToM(d.catheter.outerDiameterMm);
+  if (d.catheter.flexible) {
+    const CatheterSpec& c = d.catheter;
+    CatheterDef& f = def.catheter;
+    f.flexible = true;
+    f.material = compileMaterial(c.material);
+    f.outerRadius = 0.5 * mmToM(c.outerDiameterMm);
+    f.innerRadius = 0.5 * mmToM(c.innerDiameterMm);
+    f.shape = {c.rest.type, degToRad(c.rest.angleDeg), mmToM(c.rest.radiusMm)};
+    f.heldLength = mmToM(c.heldLengthMm);
+    f.freeLength = mmToM(c.freeLengthMm);
+    f.beams = c.beams;
+    f.weighting = c.weighting;
+  }
   def.catheterDrawLength = mmToM(d.catheter.drawLengthMm);
   def.initialDeployed = mmToM(d.initialDeployedMm);
   def.initialTwist = degToRad(d.initialTwistDeg);
@@ -238,6 +263,7 @@ CompiledScene compileSceneWithDeployment(const SceneSpec& s) {
     out.initialDeployed = dd.initialDeployed;
     out.initialTwist = dd.initialTwist;
   }
+  def.obstacles = compileObstacles(s.obstacles, s.file);
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/json_reader.h"
+#include "io/scene_obstacles.h"
 #include "physics/deployment.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
@@ -83,12 +84,27 @@ struct RodSpec {
 
 // A coil pushed out of a catheter ("deployment" block). The coil's rest
 // shape runs, as for any rod, from its proximal (pushed) end to the distal tip.
+// The catheter's tip keys hold for both types: where the tip is at rest.
+// A flexible catheter adds its polymer tube, rest shape and held/free parts.
+struct CatheterRestSpec {
+  CatheterShape::Type type = CatheterShape::Type::Straight;
+  double angleDeg = 0, radiusMm = 0;
+};
+
 struct CatheterSpec {
+  bool flexible = false;
   Vec3 tipPositionMm = Vec3::Zero();
   Vec3 direction = Vec3::UnitX();        // exit direction at the tip
   Vec3 referenceNormal = Vec3::UnitY();  // coil d1 at the tip at zero twist; orthogonal to direction
   double outerDiameterMm = 0.6;
-  double drawLengthMm = 20;
+  double drawLengthMm = 20;  // rigid only
+  // flexible only
+  double innerDiameterMm = 0.42;
+  MaterialSpec material;
+  CatheterRestSpec rest;
+  double heldLengthMm = 0, freeLengthMm = 0;
+  int beams = 0;
+  CompositeWeighting weighting = CompositeWeighting::BendingStiffness;
 };
 
 struct DeploymentSpec {
@@ -126,6 +142,7 @@ struct SceneSpec {
   std::vector<EffectSpec> effects;
   std::vector<RodSpec> rods;
   std::optional<DeploymentSpec> deployment;  // rods of the deployment come after `rods`
+  std::vector<ObstacleSpec> obstacles;       // walls (scene_obstacles.h)
   std::vector<std::string> warnings;  // harmless oddities found while reading (unused keys...)
 };
 

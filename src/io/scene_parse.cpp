@@ -153,16 +153,54 @@ void readCoil(const JsonNode& n, DeploymentSpec& d) {
   d.section = readSection(n.child("section"));
 }
 
+// A steam-shaped tip: {"type": "straight"}, {"type": "angled", "angle_deg",
+// "radius_mm"}, {"type": "j", "radius_mm", "angle_deg" (180 by default)},
+// {"type": "s", "angle_deg", "radius_mm"}.
+CatheterRestSpec readCatheterRest(const JsonNode& n) {
+  if (!n.isObject()) n.expected("an object with a \"type\"");
+  CatheterRestSpec r;
+  const std::string type = n.child("type").oneOf({"straight", "angled", "j", "s"});
+  if (type == "straight") {
+    n.allowKeys({"type"});
+    return r;
+  }
+  n.allowKeys({"type", "angle_deg", "radius_mm"});
+  r.type = type == "angled" ? CatheterShape::Type::Angled : type == "j" ? CatheterShape::Type::J : CatheterShape::Type::S;
+  const Bounds angle{0, 180, true, false, "deg"};
+  if (type == "j") r.angleDeg = n.has("angle_deg") ? n.child("angle_deg").number(angle) : 180.0;
+  else r.angleDeg = n.child("angle_deg").number(angle);
+  r.radiusMm = n.child("radius_mm").number(kPositive);
+  return r;
+}
+
 CatheterSpec readCatheter(const JsonNode& n) {
-  n.allowKeys({"type", "tip_position_mm", "direction", "reference_normal", "outer_diameter_mm", "draw_length_mm"});
+  if (!n.isObject()) n.expected("an object with a \"type\": \"rigid\" or \"flexible\"");
   CatheterSpec c;
-  // Only a rigid straight catheter exists in the physics so far.
-  n.child("type").oneOf({"rigid"});
+  // Rigid: a straight tip held in place. Flexible: a polymer beam chain with a rest shape.
+  c.flexible = n.child("type").oneOf({"rigid", "flexible"}) == "flexible";
+  if (c.flexible)
+    n.allowKeys({"type", "tip_position_mm", "direction", "reference_normal", "outer_diameter_mm", "inner_diameter_mm",
+                 "material", "rest_shape", "held_length_mm", "free_length_mm", "beams", "composite_weighting"});
+  else
+    n.allowKeys({"type", "tip_position_mm", "direction", "reference_normal", "outer_diameter_mm", "draw_length_mm"});
   c.tipPositionMm = toVec3(n.child("tip_position_mm").vec3(kAny));
   c.direction = toVec3(n.child("direction").vec3(kAny));
   c.referenceNormal = toVec3(n.child("reference_normal").vec3(kAny));
   if (auto d = n.optional("outer_diameter_mm")) c.outerDiameterMm = d->number(kPositive);
-  if (auto l = n.optional("draw_length_mm")) c.drawLengthMm = l->number(kPositive);
+  if (!c.flexible) {
+    if (auto l = n.optional("draw_length_mm")) c.drawLengthMm = l->number(kPositive);
+    return c;
+  }
+  if (auto d = n.optional("inner_diameter_mm")) c.innerDiameterMm = d->number(kNonNegative);
+  c.material = readMaterial(n.child("material"));
+  c.rest = readCatheterRest(n.child("rest_shape"));
+  c.heldLengthMm = n.child("held_length_mm").number(kNonNegative);
+  c.freeLengthMm = n.child("free_length_mm").number(kPositive);
+  c.beams = int(n.child("beams").integer(2, 10'000));
+  if (auto w = n.optional("composite_weighting"))
+    c.weighting = w->oneOf({"bending_stiffness", "young_modulus"}) == "bending_stiffness"
+                      ? CompositeWeighting::BendingStiffness
+                      : CompositeWeighting::YoungModulus;
   return c;
 }
 
@@ -208,7 +246,7 @@ SceneSpec parseScene(const nlohmann::json& document, const std::string& file) {
   const JsonNode root(document, file);
   if (!root.isObject()) root.expected("a JSON object (a coilsim scene)");
   root.allowKeys({"format", "name", "description", "gravity_m_s2", "solve", "time_step_s", "duration_s",
-                  "newton_iterations", "damping", "load_steps", "max_newton_iterations", "effects", "rods", "deployment"});
+                  "newton_iterations", "damping", "load_steps", "max_newton_iterations", "effects", "rods", "deployment", "obstacles"});
   root.child("format").oneOf({kSceneFormat});
   SceneSpec s;
   s.file = file;
@@ -255,6 +293,7 @@ SceneSpec parseScene(const nlohmann::json& document, const std::string& file) {
     root.child("rods").expected("an array of at least one rod (or a \"deployment\" block)");
   }
   if (deployment) s.deployment = readDeployment(root.child("deployment"));
+  if (auto o = root.optional("obstacles")) s.obstacles = readObstacles(*o, file);
   return s;
 }
 

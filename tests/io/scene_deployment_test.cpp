@@ -127,7 +127,7 @@ TEST(SceneDeployment, CatheterErrorsNameTheirPath) {
   EXPECT_CONTAINS(errorWith("/deployment/catheter/direction", {0, 0, 0}),
                   "/deployment/catheter/direction: expected a non-zero vector");
   EXPECT_CONTAINS(errorWith("/deployment/catheter/type", "shaped"),
-                  "/deployment/catheter/type: expected \"rigid\", got \"shaped\"");
+                  "/deployment/catheter/type: expected one of \"rigid\", \"flexible\", got \"shaped\"");
   EXPECT_CONTAINS(errorWith("/deployment/catheter/type", nullptr, true), "/deployment/catheter/type: missing");
   EXPECT_CONTAINS(errorWith("/deployment/catheter/tip_position_mm", {0, 1}),
                   "/deployment/catheter/tip_position_mm: expected [x, y, z]");
@@ -135,6 +135,83 @@ TEST(SceneDeployment, CatheterErrorsNameTheirPath) {
                   "/deployment/catheter/outer_diameter_mm: expected a finite number > 0, got 0");
   EXPECT_CONTAINS(errorWith("/deployment/catheter/tip", 1), "/deployment/catheter/tip: unknown key");
   EXPECT_CONTAINS(errorWith("/deployment/catheter", nullptr, true), "/deployment/catheter: missing");
+}
+
+// kScene with a flexible 90 deg catheter instead of the rigid tip.
+nlohmann::json flexible() {
+  nlohmann::json doc = base();
+  doc["deployment"]["catheter"] = nlohmann::json::parse(R"({
+    "type": "flexible", "tip_position_mm": [1, 2, 3], "direction": [0, 2, 0], "reference_normal": [0, 0, 1],
+    "outer_diameter_mm": 0.6, "inner_diameter_mm": 0.42,
+    "material": {"young_modulus_gpa": 0.3, "poisson_ratio": 0.4, "density_g_cm3": 1.1},
+    "rest_shape": {"type": "angled", "angle_deg": 90, "radius_mm": 4},
+    "held_length_mm": 5, "free_length_mm": 15, "beams": 20})");
+  return doc;
+}
+
+std::string flexibleErrorWith(const std::string& pointer, const nlohmann::json& value, bool remove = false) {
+  nlohmann::json doc = flexible();
+  const nlohmann::json::json_pointer p(pointer);
+  if (remove) doc.at(p.parent_pointer()).erase(p.back());
+  else doc[p] = value;
+  return errorOfDoc(doc);
+}
+
+TEST(SceneDeployment, FlexibleCatheterCompilesToSiWithItsTipAtTheStatedPose) {
+  const CompiledScene c = compileSceneWithDeployment(parse(flexible()));
+  ASSERT_TRUE(c.deployment);
+  const Deployment& dep = *c.deployment;
+  EXPECT_EQ(dep.tipNode, 20);
+  EXPECT_DOUBLE_EQ(dep.catheter.material.youngModulus, 0.3e9);
+  EXPECT_DOUBLE_EQ(dep.catheter.outerRadius, 0.3e-3);
+  EXPECT_DOUBLE_EQ(dep.catheter.innerRadius, 0.21e-3);
+  EXPECT_NEAR(dep.catheter.shape.angle, M_PI / 2, 1e-15);
+  EXPECT_DOUBLE_EQ(dep.catheter.shape.radius, 4e-3);
+  EXPECT_EQ(dep.catheter.weighting, CompositeWeighting::BendingStiffness) << "the moment balance is the default";
+  const Model m = compileModel(c.model);
+  // Chain: 20 catheter beams then the coil's 30; nodes within 5 mm of the base held.
+  EXPECT_EQ(m.rods[dep.chainRod].nnode, 20 + 30 + 1);
+  EXPECT_EQ(m.rods[dep.chainRod].constraints.size(), 6u);
+  // The catheter's rest tip sits where the scene puts the tip, exit along +y,
+  // and its base 90 deg away: the proximal axis is then along -z x y... any
+  // normal of y; the bend turns it by 90 deg.
+  const RodModel& cath = m.rods[dep.catheterRod];
+  EXPECT_NEAR((cath.restPoints.back() - Vec3(1e-3, 2e-3, 3e-3)).norm(), 0, 1e-15);
+  EXPECT_NEAR((cath.restFrames.back() * Vec3::UnitX() - Vec3::UnitY()).norm(), 0, 1e-14);
+  EXPECT_NEAR(std::abs((cath.restFrames.front() * Vec3::UnitX()).dot(Vec3::UnitY())), 0, 1e-14);
+  auto doc = flexible();
+  doc["deployment"]["catheter"]["composite_weighting"] = "young_modulus";
+  EXPECT_EQ(compileSceneWithDeployment(parse(doc)).deployment->catheter.weighting, CompositeWeighting::YoungModulus);
+}
+
+TEST(SceneDeployment, FlexibleCatheterErrorsNameTheirPath) {
+  EXPECT_CONTAINS(flexibleErrorWith("/deployment/catheter/inner_diameter_mm", 0.7),
+                  "d.json: /deployment/catheter/inner_diameter_mm: expected less than outer_diameter_mm (0.6 mm), got 0.7 mm");
+  EXPECT_CONTAINS(flexibleErrorWith("/deployment/catheter/rest_shape", {{"type", "j"}, {"radius_mm", 6}}),
+                  "/deployment/catheter/rest_shape: the bends take 18.8496 mm of arc (angle x radius) but free_length_mm "
+                  "is 15 mm");
+  EXPECT_CONTAINS(flexibleErrorWith("/deployment/catheter/rest_shape/type", "hook"),
+                  "/deployment/catheter/rest_shape/type: expected one of \"straight\", \"angled\", \"j\", \"s\"");
+  EXPECT_CONTAINS(flexibleErrorWith("/deployment/catheter/rest_shape/angle_deg", 0),
+                  "/deployment/catheter/rest_shape/angle_deg: expected a finite number in (0, 180] deg");
+  EXPECT_CONTAINS(flexibleErrorWith("/deployment/catheter/rest_shape/radius_mm", nullptr, true),
+                  "/deployment/catheter/rest_shape/radius_mm: missing");
+  EXPECT_CONTAINS(flexibleErrorWith("/deployment/catheter/material/young_modulus_gpa", "soft"),
+                  "/deployment/catheter/material/young_modulus_gpa: expected a finite number > 0");
+  EXPECT_CONTAINS(flexibleErrorWith("/deployment/catheter/beams", 1),
+                  "/deployment/catheter/beams: expected an integer in [2, 10000], got 1");
+  EXPECT_CONTAINS(flexibleErrorWith("/deployment/catheter/free_length_mm", nullptr, true),
+                  "/deployment/catheter/free_length_mm: missing");
+  EXPECT_CONTAINS(flexibleErrorWith("/deployment/catheter/held_length_mm", -1),
+                  "/deployment/catheter/held_length_mm: expected a finite number >= 0, got -1");
+  EXPECT_CONTAINS(flexibleErrorWith("/deployment/catheter/composite_weighting", "average"),
+                  "/deployment/catheter/composite_weighting: expected one of \"bending_stiffness\", \"young_modulus\"");
+  // Keys of the other type are unknown here, and the other way round.
+  EXPECT_CONTAINS(flexibleErrorWith("/deployment/catheter/draw_length_mm", 20),
+                  "/deployment/catheter/draw_length_mm: unknown key");
+  EXPECT_CONTAINS(errorWith("/deployment/catheter/held_length_mm", 5), "/deployment/catheter/held_length_mm: unknown key");
+  EXPECT_CONTAINS(flexibleErrorWith("/deployment/catheter/rest_shape", {{"type", "straight"}, {"angle_deg", 90}}),
+                  "/deployment/catheter/rest_shape/angle_deg: unknown key");
 }
 
 TEST(SceneDeployment, LimitsAndNumbersAreChecked) {
