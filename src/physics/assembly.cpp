@@ -20,15 +20,12 @@ double assembleRod(const Model& model, int rodIndex, RodState& rod, double time,
   BeamEval ev;
   if (withTangent && rod.activeNodes > 0) w.stiffness.diag[0].setZero();
   for (int e = 0; e + 1 < rod.activeNodes; ++e) {
-    evalBeam(rod.beams[e], rod.x[e], rod.q[e], rod.x[e + 1], rod.q[e + 1], withTangent, ev);
+    evalBeam(rod.beams[e], rod.x[e], rod.q[e], rod.x[e + 1], rod.q[e + 1], false, ev);
     w.force[e] += ev.forceA;
     w.force[e + 1] += ev.forceB;
     energy += ev.energy;
-    if (withTangent) {
-      w.stiffness.diag[e] += ev.kaa;
-      w.stiffness.diag[e + 1] = ev.kbb;
-      w.stiffness.lower[e] = ev.kba;
-    }
+    if (withTangent)
+      addBeamTangent(rod.beams[e], ev.rotation, w.stiffness.diag[e], w.stiffness.lower[e], w.stiffness.diag[e + 1]);
   }
   for (const NodalLoad& l : rm.loads) {
     if (l.node >= rod.activeNodes) continue;
@@ -43,8 +40,17 @@ double assembleRod(const Model& model, int rodIndex, RodState& rod, double time,
 }
 
 Mat3 nodeInertiaGlobal(const RodState& rod, const Quat& q, int node) {
+  const Vec3& d = rod.nodes[node].inertia;  // (t, d1, d2)
+  // Round wire: R diag(It, I, I) R^T = I 1 + (It - I) t t^T, with t the
+  // tangent; a fifth of the general product, and this runs for every node.
+  if (d[1] == d[2]) {
+    const Vec3 t = q * Vec3::UnitX();
+    Mat3 out = (d[0] - d[1]) * (t * t.transpose());
+    out.diagonal().array() += d[1];
+    return out;
+  }
   const Mat3 r = q.toRotationMatrix();
-  return r * rod.nodes[node].inertia.asDiagonal() * r.transpose();
+  return r * d.asDiagonal() * r.transpose();
 }
 
 void collectFixedDofs(const RodModel& model, RodState& rod) {

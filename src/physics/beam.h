@@ -33,6 +33,7 @@ Mat12 localBeamStiffness(double length, const Material& material, const Section&
 
 struct BeamEval {
   Quat frame;         // current element frame R_e
+  Mat3 rotation;      // the same as a rotation matrix
   Vec6 deformation;   // (u_b, theta_b) in the element frame
   Vec3 rotationA;     // theta_a in the element frame
   Vec6 forceA, forceB;  // elastic restoring force and moment on each node, global
@@ -44,6 +45,11 @@ struct BeamEval {
 // only when `withTangent` is true.
 void evalBeam(const BeamRest& rest, const Vec3& xa, const Quat& qa, const Vec3& xb, const Quat& qb,
               bool withTangent, BeamEval& out);
+
+// Adds the global tangent of an element evaluated with rotation
+// `BeamEval::rotation` straight into a block-tridiagonal chain, without the
+// copies through BeamEval: K(a,a) += kaa, K(b,a) = kba, K(b,b) = kbb.
+void addBeamTangent(const BeamRest& rest, const Mat3& rotation, Mat6& diagA, Mat6& lowerBA, Mat6& diagB);
 
 // Element rest constants from the rest poses of its two nodes.
 BeamRest makeBeamRest(const Vec3& xa, const Quat& qa, const Vec3& xb, const Quat& qb,

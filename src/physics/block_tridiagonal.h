@@ -29,7 +29,7 @@ class BlockTridiagonalSolver {
 
  private:
   std::vector<Mat6> chol_;  // (n) inverses C_i^{-1} of the lower Cholesky factors of the Schur complements
-  std::vector<Mat6> gain_;  // (n) G_i = C_{i-1}^{-1} A(i, i-1)^T, G_0 unused
+  std::vector<Mat6> gain_;  // (n) G_i^T, G_i = C_{i-1}^{-1} A(i, i-1)^T; entry 0 unused
   int size_ = 0;            // leading blocks factorized
 };
 

@@ -43,10 +43,13 @@ Vec3 anyPerpendicular(const Vec3& v) {
 }
 
 Quat minimalRotation(const Vec3& from, const Vec3& to) {
+  // q = (|a||b| + a.b, a x b), normalised, is the half-angle rotation taking
+  // a onto b: no trigonometry, and this runs for every beam in every step.
+  const double norms = std::sqrt(from.squaredNorm() * to.squaredNorm());
   const double c = from.dot(to);
-  if (c < -1.0 + 1e-12) return Quat(Eigen::AngleAxisd(M_PI, anyPerpendicular(from)));
-  Quat q;
-  q.setFromTwoVectors(from, to);
+  if (c < (-1.0 + 1e-12) * norms) return Quat(Eigen::AngleAxisd(M_PI, anyPerpendicular(from)));
+  const Vec3 axis = from.cross(to);
+  Quat q(norms + c, axis.x(), axis.y(), axis.z());
   return q.normalized();
 }
 
