@@ -31,6 +31,22 @@ void fillDrawData(const Model& model, const State& state, DrawData& out) {
     t.frames.assign(r.q.begin(), r.q.begin() + r.activeNodes);
     t.colours.assign(r.activeNodes, defaultColour(rm.role));
   }
+  // Obstacles (vessel walls) are drawn semi-transparent so the coil stays
+  // visible inside; storage is reused, so no allocation after the first frame.
+  out.meshes.resize(model.obstacles.size());
+  for (size_t k = 0; k < model.obstacles.size(); ++k) {
+    const Obstacle& o = model.obstacles[k];
+    DrawMesh& m = out.meshes[k];
+    m.name = o.name;
+    if (o.mesh) {
+      m.vertices.assign(o.mesh->vertices.begin(), o.mesh->vertices.end());
+      m.triangles.assign(o.mesh->triangles.begin(), o.mesh->triangles.end());
+    } else {
+      m.vertices.clear(), m.triangles.clear();
+    }
+    // Touchable walls reddish, drawn-only ones grey.
+    m.colour = o.contact ? Colour(0.85f, 0.35f, 0.3f, 0.3f) : Colour(0.6f, 0.6f, 0.6f, 0.2f);
+  }
 }
 
 }  // namespace coilsim

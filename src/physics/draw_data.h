@@ -47,8 +47,10 @@ struct DrawData {
 // Default colours per role; stress colouring is left to callers.
 Colour defaultColour(RodRole role);
 
-// Fills `out.tubes` from the state's rods (reusing its storage). Meshes and
-// points are left for the layers that own them (contacts, validation).
+// Fills `out.tubes` from the state's rods and `out.meshes` (resized to the
+// obstacle count) from the model's obstacles, semi-transparent, reusing
+// storage. Points, and any further meshes appended after this call, are left
+// for the layers that own them (contacts, validation).
 void fillDrawData(const Model& model, const State& state, DrawData& out);
 
 }  // namespace coilsim

@@ -124,6 +124,8 @@ StepReport step(const Model& model, State& state) {
   const auto start = std::chrono::steady_clock::now();
   for (RodState& r : state.rods) saveStart(r);
   advanceTargets(model, state, model.timeStep);
+  for (const EffectUse& u : model.effects)
+    if (u.enabled) u.effect->beginStep(model, u.values, state);
   StepReport report;
   long iterations = 0;
   for (size_t k = 0; k < model.rods.size() && report.ok(); ++k)

@@ -17,6 +17,7 @@ namespace coilsim {
 struct Model;
 struct RodModel;
 struct RodState;
+struct State;
 
 // What an effect reads for one rod.
 struct EffectContext {
@@ -46,6 +47,10 @@ class Effect {
   virtual void apply(const EffectContext& ctx, std::span<const double> values, RodForces& out) const = 0;
   // Potential energy of a conservative effect (J), for energy bookkeeping.
   virtual double energy(const EffectContext&, std::span<const double>) const { return 0; }
+  // Called once at the start of each dynamic step, before any rod is
+  // assembled, for effects that look at all rods together (contact
+  // detection); they keep what they find in the State. Default: nothing.
+  virtual void beginStep(const Model&, std::span<const double>, State&) const {}
 };
 
 // One effect switched into a model, with its parameter values (SI).

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "physics/beam.h"
+#include "physics/contact/obstacle_tree.h"
 
 namespace coilsim {
 namespace {
@@ -99,6 +100,7 @@ Model compileModel(const ModelDef& def) {
       throw std::invalid_argument("obstacle '" + o.name + "' friction must be finite and >= 0");
   }
   m.obstacles = def.obstacles;
+  m.obstacleTrees = buildObstacleTrees(m.obstacles);
   for (const EffectUse& u : m.effects) {
     if (!u.effect) throw std::invalid_argument("effect use without an effect");
     const auto specs = u.effect->params();

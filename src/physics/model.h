@@ -3,6 +3,7 @@
 // stiffness, mass, constraints, effects and their parameter values). Build it
 // with compileModel() from a ModelDef; several States may share one Model.
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,8 @@
 #include "physics/triangle_mesh.h"
 
 namespace coilsim {
+
+class ObstacleTree;  // physics/contact/obstacle_tree.h
 
 // Degrees of freedom of a node, as bits: ux uy uz (global), rx ry rz (global).
 enum DofMask : unsigned { kFreeDofs = 0, kTranslation = 0b000111, kRotation = 0b111000, kAllDofs = 0b111111 };
@@ -112,6 +115,7 @@ struct Model {
   HealthLimits health;
   std::vector<EffectUse> effects;
   std::vector<Obstacle> obstacles;
+  std::vector<std::shared_ptr<const ObstacleTree>> obstacleTrees;  // (obstacles) collision trees, built by compileModel
 };
 
 // Builds element constants, lumped masses and placed rest shapes.

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "physics/block_tridiagonal.h"
+#include "physics/contact/contact_state.h"
 #include "physics/model.h"
 #include "physics/math.h"
 
@@ -59,6 +60,7 @@ struct RodState {
   std::vector<Vec3> v;  // (nnode) velocities, m/s
   std::vector<Vec3> w;  // (nnode) angular velocities, rad/s, global
   std::vector<Pose> targets;  // (constraints) where each constraint holds its node
+  RodContacts contact;        // contacts found this step and contact forces per node
   RodWorkspace work;
 };
 

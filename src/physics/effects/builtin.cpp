@@ -7,6 +7,9 @@ void registerBuiltinEffects(EffectRegistry& r) {
   r.add(makeGravityEffect());
   r.add(makeBuoyancyEffect());
   r.add(makeDragEffect());
+  r.add(makeWallContactEffect());
+  r.add(makeSelfContactEffect());
+  r.add(makeRodContactEffect());
 }
 
 }  // namespace coilsim

@@ -8,4 +8,7 @@ namespace coilsim {
 std::unique_ptr<Effect> makeGravityEffect();
 std::unique_ptr<Effect> makeBuoyancyEffect();
 std::unique_ptr<Effect> makeDragEffect();
+std::unique_ptr<Effect> makeWallContactEffect();
+std::unique_ptr<Effect> makeSelfContactEffect();
+std::unique_ptr<Effect> makeRodContactEffect();
 }  // namespace coilsim

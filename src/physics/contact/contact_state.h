@@ -1,0 +1,44 @@
+#pragma once
+// What the contact effects remember between steps, per rod: the contacts
+// found at the start of the step (with their friction memory) and the
+// contact forces per node, for wall-load warnings, planning and drawing.
+// Detection fills these in Effect::beginStep; apply() only reads them.
+#include <vector>
+
+#include "physics/math.h"
+
+namespace coilsim {
+
+enum class ContactKind { Wall, Self, Rod };
+
+// One contact of a segment (nodes a, a + 1) of this rod with a wall or another segment.
+struct ContactPoint {
+  int segment = 0;            // node a = segment, node b = segment + 1
+  int other = 0;              // obstacle index (wall) or rod index (self, rod)
+  int otherSegment = -1;      // segment of the other rod (-1 for walls)
+  bool line = false;          // wall: line contact along the segment; else a point at s
+  double s = 0;               // point on the segment, in [0, 1] (line: force centroid)
+  Vec3 normal = Vec3::UnitZ();  // unit, the direction this rod is pushed
+  Vec3 anchor = Vec3::Zero();   // a point of the other surface (wall plane point or other centre-line point)
+  double radius = 0;          // clearance the centre line keeps from `anchor` plane (r or r1 + r2)
+  double gap = 0;             // clearance at detection, m (< 0: penetration)
+  Vec3 otherVelocity = Vec3::Zero();  // velocity of the other surface point at detection
+  double normalForce = 0;     // penalty normal force at detection, N
+  // Friction memory: elastic tangential displacement of the regularised
+  // Coulomb spring (the stick point is contact point - slip) and whether the
+  // contact slides (dynamic coefficient) or sticks (static).
+  Vec3 slip = Vec3::Zero();
+  bool sliding = false;
+  Vec3 at = Vec3::Zero();     // the contact point on this rod at detection (slip grows from here within a step)
+};
+
+struct RodContacts {
+  std::vector<ContactPoint> wall, self, rod;  // this step's contacts, sorted by segment
+  std::vector<ContactPoint> previous;         // scratch: last step's wall list while matching
+  std::vector<double> wallForce;  // (nnode) normal force from walls per node, N
+  std::vector<double> selfForce;  // (nnode) normal force from self-contact per node, N
+  std::vector<double> rodForce;   // (nnode) normal force from other rods per node, N
+  double wallPenetration = 0;     // deepest wall penetration at the last detection, m (>= 0)
+};
+
+}  // namespace coilsim

@@ -1,0 +1,33 @@
+#pragma once
+// Contact detection at the start of a step: fills each rod's contact lists
+// (physics/contact/contact_state.h), carries friction memory over from the
+// last step and reports the normal force per node. The response is in
+// response.h; the effects in physics/effects/*_contact.cpp tie them together.
+#include "physics/contact/response.h"
+#include "physics/model.h"
+#include "physics/state.h"
+
+namespace coilsim {
+
+// Capsules (segment, radius = the nodes' outer radius) against every
+// obstacle's triangles, through its collision tree. One contact per segment
+// and obstacle: the nearest triangle feature within radius + margin, its
+// normal the direction from that feature to the centre line (so contacts on
+// edges and vertices push the right way) and its side from the triangle
+// normal: the free side is inside the closed surface (vessel lumen,
+// aneurysm sac), so a coil in a sac is pushed inwards. A segment that was
+// in contact and is now wholly beyond the wall (which no overlap query
+// reports) is found by a wider nearest-feature search and pushed back.
+// Catheter rods are rigid and skip wall contact.
+void detectWallContacts(const Model& model, State& state, double margin, const ContactLaw& law);
+
+// Capsule pairs through a uniform grid over all segments (O(n) for a coil,
+// not O(n^2)). sameRod: non-adjacent segments of one rod (self-contact);
+// otherwise segments of different rods (coil-coil, coil-catheter). Rods
+// that are inactive take no part; pairs of two catheters are skipped, and so
+// are segments that share an end (a deploying coil leaves the catheter tip).
+// `catheterLaw` is used when one side is a catheter.
+void detectRodContacts(const Model& model, State& state, bool sameRod, double margin, const ContactLaw& law,
+                       const ContactLaw& catheterLaw);
+
+}  // namespace coilsim

@@ -1,0 +1,43 @@
+// Self-contact: non-adjacent segments of one rod (the loops of a coil) as
+// capsules pushing each other apart, with Coulomb friction. Model and
+// reasons: physics/contact/response.h; broad phase: physics/contact/detect.h.
+#include "physics/contact/detect.h"
+#include "physics/effects/builtin.h"
+
+namespace coilsim {
+namespace {
+
+constexpr ParamSpec kParams[] = {
+    {"stiffness_n_mm", "N/mm", "penalty stiffness of one segment pair", 2.0, 0.0, 1e4, 1e3},
+    {"damping_ratio", "1", "normal (and sticking) damping as a fraction of critical for the node mass", 1.0, 0.0, 10.0,
+     1.0},
+    {"margin_mm", "mm", "distance at which a pair is tracked before it touches", 0.05, 0.0, 5.0, 1e-3},
+    {"friction_static", "1", "static Coulomb coefficient coil-coil", 0.15, 0.0, 5.0, 1.0},
+    {"friction_dynamic", "1", "dynamic Coulomb coefficient coil-coil", 0.1, 0.0, 5.0, 1.0},
+    {"friction_stiffness_ratio", "1", "stick spring stiffness over normal stiffness (regularised Coulomb)", 0.5, 0.01,
+     10.0, 1.0},
+};
+
+ContactLaw lawOf(std::span<const double> p) {
+  return {p[0], p[1], p[3], p[4], p[5], 2.0};
+}
+
+class SelfContact final : public Effect {
+ public:
+  std::string_view name() const override { return "self_contact"; }
+  std::string_view description() const override { return "non-adjacent segments of one rod, with friction"; }
+  std::span<const ParamSpec> params() const override { return kParams; }
+  void beginStep(const Model& model, std::span<const double> p, State& state) const override {
+    const ContactLaw law = lawOf(p);
+    detectRodContacts(model, state, true, p[2], law, law);
+  }
+  void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
+    applyContacts(c.state.contact.self, c.state, lawOf(p), out);
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Effect> makeSelfContactEffect() { return std::make_unique<SelfContact>(); }
+
+}  // namespace coilsim

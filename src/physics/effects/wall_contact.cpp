@@ -1,0 +1,44 @@
+// Wall contact: rod capsules against the obstacles' triangle meshes
+// (aneurysm sac, parent vessel, phantom), penalty with implicit stiffness and
+// Coulomb friction. Model and reasons: physics/contact/response.h;
+// detection: physics/contact/detect.h.
+#include "physics/contact/detect.h"
+#include "physics/effects/builtin.h"
+
+namespace coilsim {
+namespace {
+
+constexpr ParamSpec kParams[] = {
+    {"stiffness_n_mm2", "N/mm2", "penalty stiffness per length of rod pressed into the wall (N/mm per mm)", 50.0, 0.0,
+     1e4, 1e6},
+    {"damping_ratio", "1", "normal (and sticking) damping as a fraction of critical for the node mass", 1.0, 0.0, 10.0,
+     1.0},
+    {"margin_mm", "mm", "distance at which a wall contact is tracked before it touches", 0.05, 0.0, 5.0, 1e-3},
+    {"friction_static", "1", "static Coulomb coefficient coil-wall", 0.3, 0.0, 5.0, 1.0},
+    {"friction_dynamic", "1", "dynamic Coulomb coefficient coil-wall", 0.2, 0.0, 5.0, 1.0},
+    {"friction_stiffness_ratio", "1", "stick spring stiffness over normal stiffness (regularised Coulomb)", 0.5, 0.01,
+     10.0, 1.0},
+};
+
+ContactLaw lawOf(std::span<const double> p) {
+  return {p[0], p[1], p[3], p[4], p[5], 1.0};
+}
+
+class WallContact final : public Effect {
+ public:
+  std::string_view name() const override { return "wall_contact"; }
+  std::string_view description() const override { return "rods against the obstacle meshes, with friction"; }
+  std::span<const ParamSpec> params() const override { return kParams; }
+  void beginStep(const Model& model, std::span<const double> p, State& state) const override {
+    detectWallContacts(model, state, p[2], lawOf(p));
+  }
+  void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
+    applyContacts(c.state.contact.wall, c.state, lawOf(p), out);
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Effect> makeWallContactEffect() { return std::make_unique<WallContact>(); }
+
+}  // namespace coilsim

@@ -1,0 +1,248 @@
+// Wall contact (physics/contact, effects/wall_contact.cpp). References: the
+// closest-point queries against dense sampling; a rod resting on a plane
+// against its weight (equilibrium: the wall carries m g; penalty law:
+// penetration = weight per length / stiffness); a coil deployed into a 7 mm
+// spherical cavity checked against the face planes of the (convex) cavity,
+// an exact clearance that does not use the contact code.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "physics/contact/geometry.h"
+#include "physics/contact/obstacle_tree.h"
+#include "physics/contact/report.h"
+#include "physics/controller.h"
+#include "physics/integrator.h"
+#include "support/meshes.h"
+#include "support/rod_models.h"
+
+namespace coilsim {
+namespace {
+
+using test::convexClearance;
+using test::icosphere;
+using test::obstacleOf;
+
+TEST(ContactGeometryTest, SegmentTriangleMatchesDenseSampling) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const auto rnd = [&] { return Vec3(u(rng), u(rng), u(rng)); };
+  for (int trial = 0; trial < 200; ++trial) {
+    const Vec3 p0 = rnd(), p1 = rnd(), a = rnd(), b = rnd(), c = rnd();
+    const SegmentTriangle h = closestSegmentTriangle(p0, p1, a, b, c);
+    // Brute force: the segment sampled finely against the triangle sampled
+    // by barycentric coordinates.
+    double best = INFINITY;
+    constexpr int n = 60;
+    for (int i = 0; i <= n; ++i) {
+      const Vec3 x = p0 + (p1 - p0) * (double(i) / n);
+      for (int j = 0; j <= n; ++j)
+        for (int k = 0; j + k <= n; ++k) best = std::min(best, (x - (a + (b - a) * (double(j) / n) + (c - a) * (double(k) / n))).norm());
+    }
+    ASSERT_LE(h.distance, best + 1e-12) << "trial " << trial;
+    ASSERT_GE(h.distance, best - 0.05) << "trial " << trial;  // sampling resolution
+    ASSERT_NEAR((h.onSegment - h.onTriangle).norm(), h.distance, 1e-12);
+  }
+}
+
+TEST(ContactGeometryTest, SegmentSegmentMatchesDenseSampling) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const auto rnd = [&] { return Vec3(u(rng), u(rng), u(rng)); };
+  for (int trial = 0; trial < 300; ++trial) {
+    const Vec3 p0 = rnd(), p1 = rnd(), q0 = rnd();
+    // Every third pair parallel, to exercise the overlap rule.
+    const Vec3 q1 = trial % 3 ? rnd() : Vec3(q0 + 0.7 * (p1 - p0));
+    const SegmentPair s = closestSegmentSegment(p0, p1, q0, q1);
+    double best = INFINITY;
+    for (int i = 0; i <= 400; ++i)
+      for (int j = 0; j <= 400; ++j)
+        best = std::min(best, (p0 + (p1 - p0) * (i / 400.0) - q0 - (q1 - q0) * (j / 400.0)).norm());
+    ASSERT_LE(s.distance, best + 1e-12);
+    ASSERT_GE(s.distance, best - 0.01);
+  }
+}
+
+TEST(ContactGeometryTest, IcosphereIsClosedAndOutwardWound) {
+  // Divergence theorem: sum of signed tetrahedron volumes = enclosed volume,
+  // positive only for outward winding; it approaches 4/3 pi R^3.
+  const TriangleMesh m = icosphere(1.0, 4);
+  double volume = 0;
+  for (const auto& t : m.triangles) volume += m.vertices[t[0]].dot(m.vertices[t[1]].cross(m.vertices[t[2]])) / 6;
+  EXPECT_NEAR(volume, 4 * M_PI / 3, 0.01 * 4 * M_PI / 3);
+  const ObstacleTree tree(std::make_shared<const TriangleMesh>(m));
+  for (size_t t = 0; t < m.triangles.size(); ++t) ASSERT_GT(tree.normal(int(t)).dot(m.vertices[m.triangles[t][0]]), 0.9);
+}
+
+TEST(ContactGeometryTest, TreeFindsExactlyTheTrianglesABruteForceScanFinds) {
+  const TriangleMesh m = icosphere(3.5e-3, 5);
+  const ObstacleTree tree(std::make_shared<const TriangleMesh>(m));
+  std::vector<int> stack, found;
+  const Vec3 lo(2.5e-3, -0.4e-3, -0.3e-3), hi(3.6e-3, 0.3e-3, 0.5e-3);
+  tree.overlapping(lo, hi, stack, found);
+  std::sort(found.begin(), found.end());
+  std::vector<int> expected;
+  for (size_t t = 0; t < m.triangles.size(); ++t) {
+    Vec3 tlo = m.vertices[m.triangles[t][0]], thi = tlo;
+    for (int k = 1; k < 3; ++k) tlo = tlo.cwiseMin(m.vertices[m.triangles[t][k]]), thi = thi.cwiseMax(m.vertices[m.triangles[t][k]]);
+    if ((tlo.array() <= hi.array()).all() && (thi.array() >= lo.array()).all()) expected.push_back(int(t));
+  }
+  ASSERT_FALSE(expected.empty());
+  EXPECT_EQ(found, expected);
+}
+
+TEST(ContactGeometryTest, BadMeshIsRefusedByName) {
+  TriangleMesh m = test::box(Vec3::Zero(), Vec3::Ones());
+  m.name = "broken";
+  m.triangles[3][1] = 42;
+  try {
+    ObstacleTree tree(std::make_shared<const TriangleMesh>(m));
+    FAIL() << "a triangle with a missing vertex was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("broken"), std::string::npos) << e.what();
+  }
+}
+
+// A straight steel-free platinum rod lying on a horizontal plane under gravity.
+struct Resting {
+  Model model;
+  State state;
+};
+
+Resting restingRod(double stiffness_n_mm2, int beams, bool contact) {
+  const double length = 0.01, radius = 0.15e-3;
+  RodDef rod = test::straightRod(length, beams, test::platinum(), circularSection(radius, test::kPlatinumPoisson));
+  rod.placement.position = Vec3(-0.005, 0, radius + 2e-6);  // 2 um above the plane
+  ModelDef def = test::modelOf({rod}, {"gravity"}, Vec3(0, 0, -9.81));
+  def.damping.massCoeff = 50;
+  def.effects.push_back(EffectRegistry::global().use("wall_contact"));
+  def.effects.back().set("stiffness_n_mm2", stiffness_n_mm2 * 1e6);
+  def.effects.back().enabled = contact;
+  def.obstacles.push_back(obstacleOf(test::plane(Vec3::Zero(), -Vec3::UnitZ(), 0.02, 8)));
+  Resting r{compileModel(def), {}};
+  r.state = makeState(r.model);
+  return r;
+}
+
+TEST(WallContactTest, RestingRodIsCarriedByItsWeightWithThePenaltyPenetration) {
+  const double k = 2.0;  // N/mm2
+  Resting r = restingRod(k, 20, true);
+  for (int i = 0; i < 1500; ++i) ASSERT_TRUE(step(r.model, r.state).ok());
+  const RodState& rod = r.state.rods[0];
+  double weight = 0;
+  for (int i = 0; i < rod.activeNodes; ++i) weight += rod.nodes[i].mass * 9.81;
+  const ContactSummary s = summarizeContacts(r.state);
+  EXPECT_NEAR(s.totalWallForce, weight, 1e-3 * weight);
+  // Uniform line load w = weight / L on a penalty k per length: pen = w / k.
+  const double expected = weight / 0.01 / (k * 1e6);
+  for (int i = 0; i < rod.activeNodes; ++i) EXPECT_NEAR(0.15e-3 - rod.x[i].z(), expected, 0.02 * expected) << "node " << i;
+  for (int i = 0; i < rod.activeNodes; ++i) EXPECT_LT(rod.v[i].norm(), 1e-6);
+}
+
+TEST(WallContactTest, SwitchedOffTheRodFallsThrough) {
+  Resting r = restingRod(2.0, 20, false);
+  for (int i = 0; i < 100; ++i) ASSERT_TRUE(step(r.model, r.state).ok());
+  EXPECT_LT(r.state.rods[0].x[10].z(), -0.0);
+  EXPECT_EQ(summarizeContacts(r.state).wallContacts, 0);
+}
+
+// A coil pushed out of a catheter into a closed 7 mm spherical cavity.
+struct Cavity {
+  Model model;
+  Deployment dep;
+  State state;
+  DeploymentState ds;
+  DeploymentController ctl;
+  TriangleMesh mesh;
+};
+
+std::unique_ptr<Cavity> cavityDeployment(double coilLength, int beams, bool wall, bool self) {
+  auto c = std::make_unique<Cavity>();
+  c->mesh = icosphere(3.5e-3, 4);  // 5120 triangles, inscribed radius 3.497 mm
+  ModelDef def;
+  def.gravity = Vec3(0, 0, -9.81);
+  def.effects.push_back(EffectRegistry::global().use("gravity"));
+  def.damping.massCoeff = 20;
+  def.timeStep = 1e-3;
+  def.effects.push_back(EffectRegistry::global().use("wall_contact"));
+  def.effects.back().enabled = wall;
+  if (getenv("H3MU")) { def.effects.back().set("friction_static", atof(getenv("H3MU"))); def.effects.back().set("friction_dynamic", atof(getenv("H3MU"))); }
+  if (getenv("H3K")) def.effects.back().set("stiffness_n_mm2", atof(getenv("H3K"))*1e6);
+  if (getenv("H3Z")) def.effects.back().set("damping_ratio", atof(getenv("H3Z")));
+  def.effects.push_back(EffectRegistry::global().use("self_contact"));
+  def.effects.back().enabled = self;
+  def.obstacles.push_back(obstacleOf(c->mesh));
+  DeploymentDef d;
+  d.coilLength = coilLength;
+  d.coilBeams = beams;
+  d.coilRest = makeHelix(coilLength, beams, 6e-3, 0.4e-3, true);
+  d.coilMaterial = test::platinum();
+  d.coilSection = circularSection(0.15e-3, test::kPlatinumPoisson);
+  d.tip.position = Vec3(0, 0, -2.5e-3);
+  d.tip.direction = Vec3(0, 0, 1);
+  d.tip.normal = Vec3(1, 0, 0);
+  d.catheterDrawLength = 0.5e-3;
+  c->dep = addDeployment(d, def);
+  c->model = compileModel(def);
+  c->state = makeState(c->model);
+  c->ds = initDeployment(c->dep, c->model, c->state, 0.0, 0.0);
+  return c;
+}
+
+// Deepest penetration of any capsule (nodes and segment midpoints) into the
+// convex cavity's wall, from the face planes.
+double deepestPenetration(const Cavity& c) {
+  double deepest = 0;
+  for (const RodState& r : c.state.rods) {
+    if (!r.active) continue;
+    for (int i = 0; i < r.activeNodes; ++i) {
+      const double radius = r.nodes[i].radius;
+      deepest = std::max(deepest, radius - convexClearance(c.mesh, r.x[i]));
+      if (i + 1 < r.activeNodes) deepest = std::max(deepest, radius - convexClearance(c.mesh, 0.5 * (r.x[i] + r.x[i + 1])));
+    }
+  }
+  return deepest;
+}
+
+TEST(WallContactTest, CoilPushedAt10MmPerSecondStaysInsideA7MmCavity) {
+  const double length = 0.04;
+  auto c = cavityDeployment(length, 80, true, !getenv("H3NOSELF"));
+  ASSERT_EQ(c->ctl.command(c->dep, c->ds, {DeviceCommand::Kind::Push, 0.01, length}), "");
+  double deepest = 0, maxForce = 0;
+  const double dt = c->model.timeStep;
+  const int steps = int(length / 0.01 / dt) + 300;
+  for (int i = 0; i < steps; ++i) {
+    c->ctl.advance(c->dep, c->model, c->state, c->ds, dt);
+    ASSERT_TRUE(step(c->model, c->state).ok()) << "step " << i << ": " << c->state.warnings.back();
+    deepest = std::max(deepest, deepestPenetration(*c));
+    if (getenv("H3DBG") && i % 20 == 0) { auto q = summarizeContacts(c->state); std::printf("%d pen %.2f um wall %d self %d maxF %.4f\n", i, deepestPenetration(*c)*1e6, q.wallContacts, q.selfContacts, q.maxWallForce); }
+    if (getenv("H3DBG2") && i >= atoi(getenv("H3DBG2")) && i < atoi(getenv("H3DBG2")) + 15) {
+      const RodState& r = c->state.rods[c->dep.chainRod];
+      std::printf("step %d active %d\n", i, r.activeNodes);
+      for (const auto& p : r.contact.wall) std::printf("  seg %d s %.3f gap %.2f um n %.3f %.3f %.3f F %.4f slip %.3g um %s |v| %.4f\n", p.segment, p.s, p.gap*1e6, p.normal.x(), p.normal.y(), p.normal.z(), p.normalForce, p.slip.norm()*1e6, p.sliding ? "slide" : "stick", r.v[p.segment+1].norm());
+    }
+    maxForce = std::max(maxForce, summarizeContacts(c->state).maxWallForce);
+  }
+  EXPECT_DOUBLE_EQ(c->ds.deployed, length);
+  const double radius = 0.15e-3;
+  std::printf("[ measured ] deepest wall penetration %.3f um (%.1f %% of the wire radius), max node wall force %.4f N\n",
+              deepest * 1e6, 100 * deepest / radius, maxForce);
+  EXPECT_LT(deepest, 0.1 * radius);
+  EXPECT_GT(maxForce, 0) << "the coil never touched the wall: the test would prove nothing";
+}
+
+TEST(WallContactTest, SwitchedOffTheCoilLeavesTheCavity) {
+  const double length = 0.02;
+  auto c = cavityDeployment(length, 40, false, false);
+  ASSERT_EQ(c->ctl.command(c->dep, c->ds, {DeviceCommand::Kind::Push, 0.01, length}), "");
+  const double dt = c->model.timeStep;
+  for (int i = 0; i < int(length / 0.01 / dt); ++i) {
+    c->ctl.advance(c->dep, c->model, c->state, c->ds, dt);
+    ASSERT_TRUE(step(c->model, c->state).ok());
+  }
+  EXPECT_GT(deepestPenetration(*c), 1e-3);
+}
+
+}  // namespace
+}  // namespace coilsim
