@@ -1,0 +1,51 @@
+#include "app/mesh_cmd.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+
+#include "app/run_scene.h"
+#include "io/json_reader.h"
+#include "io/mesh_file.h"
+
+namespace coilsim::app {
+
+int runMeshCommand(const std::vector<std::string>& args) {
+  auto usage = [](const std::string& message) {
+    std::fprintf(stderr, "coilsim mesh: %s\nusage: coilsim mesh FILE [--scale-to-mm S]\n", message.c_str());
+    return kExitUsage;
+  };
+  std::string file;
+  double scale = 1;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--scale-to-mm") {
+      if (i + 1 >= args.size()) return usage("--scale-to-mm needs a number > 0");
+      const std::string& v = args[++i];
+      const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), scale);
+      if (ec != std::errc() || end != v.data() + v.size() || !(scale > 0) || !std::isfinite(scale))
+        return usage("--scale-to-mm needs a finite number > 0, got \"" + v + "\"");
+    } else if (!args[i].empty() && args[i][0] == '-') {
+      return usage("unknown option \"" + args[i] + "\"");
+    } else if (file.empty()) {
+      file = args[i];
+    } else {
+      return usage("one mesh file at a time, got \"" + file + "\" and \"" + args[i] + "\"");
+    }
+  }
+  if (file.empty()) return usage("needs a mesh file (STL, OBJ, PLY, OFF)");
+  try {
+    const io::MeshInspection in = io::inspectMeshFile(file, scale);
+    std::fputs(io::describeInspection(in).c_str(), stdout);
+    if (!in.repaired.usable) {
+      std::fprintf(stderr, "coilsim: %s: cannot be used as a wall: %s\n", file.c_str(), in.repaired.reason.c_str());
+      return kExitUsage;
+    }
+    return kExitOk;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "coilsim: %s\n", e.what());
+    return kExitUsage;
+  }
+}
+
+}  // namespace coilsim::app
