@@ -1,0 +1,76 @@
+#include "validation/compare.h"
+
+namespace coilsim::validation {
+namespace {
+
+// Arc length on the measured curve where the catheter tip is: 0 when the
+// centre line starts at the tip; the tip's distance along the exit
+// direction before the first point when sampling starts further out.
+double tipOffset(const SmoothingSpline& sp, const Measurement& m) {
+  const double along = (sp.at(0) - m.tip.position).dot(m.tip.direction);
+  return along > 0 ? -along : sp.project(m.tip.position);
+}
+
+}  // namespace
+
+Comparison::Comparison(const Measurement& m) : m_(m) {
+  for (const Stage& st : m.stages) {
+    SplineOptions o;
+    o.sigma = st.pointSigma;
+    splines_.emplace_back(st.centerline, o);
+    sigma_.push_back(st.pointSigma > 0 ? st.pointSigma : splines_.back().sigmaUsed());
+  }
+  expectedNodes_.assign(m.stages.size(), 0);
+}
+
+std::vector<StageComparison> Comparison::compare(const std::vector<StageSim>& sims) const {
+  std::vector<StageComparison> out(sims.size());
+  for (size_t k = 0; k < sims.size(); ++k) {
+    StageComparison& c = out[k];
+    c.sigma = sigma_[k];
+    if (!sims[k].ok) {
+      c.message = sims[k].message;
+      continue;
+    }
+    const double s0 = tipOffset(splines_[k], m_);
+    for (size_t i = 0; i < sims[k].x.size(); ++i) {
+      const double s = sims[k].s[i];
+      c.s.push_back(s);
+      c.sim.push_back(sims[k].x[i]);
+      c.meas.push_back(splines_[k].at(s + s0));
+      c.ref.push_back(m_.tip.position + s * m_.tip.direction);
+    }
+    c.metrics = computeMetrics(c.sim, c.meas, c.ref);
+    c.ok = true;
+  }
+  return out;
+}
+
+Eigen::VectorXd Comparison::residuals(const std::vector<StageSim>& sims) const {
+  // Node counts depend on the stage only: a failed stage takes the count
+  // of its last success.
+  std::vector<double> out;
+  const auto comps = compare(sims);
+  for (size_t k = 0; k < comps.size(); ++k) {
+    if (comps[k].ok) {
+      expectedNodes_[k] = comps[k].sim.size();
+      for (size_t i = 0; i < comps[k].sim.size(); ++i)
+        for (int d = 0; d < 3; ++d) out.push_back(comps[k].sim[i][d] - comps[k].meas[i][d]);
+    } else {
+      const size_t nodes = expectedNodes_[k];
+      out.insert(out.end(), 3 * nodes, 0.1);
+    }
+  }
+  return Eigen::Map<Eigen::VectorXd>(out.data(), Eigen::Index(out.size()));
+}
+
+Eigen::VectorXd Comparison::sigmas(const std::vector<StageSim>& sims) const {
+  std::vector<double> out;
+  for (size_t k = 0; k < sims.size(); ++k) {
+    const size_t nodes = sims[k].ok ? sims[k].x.size() : expectedNodes_[k];
+    out.insert(out.end(), 3 * nodes, sigma_[k]);
+  }
+  return Eigen::Map<Eigen::VectorXd>(out.data(), Eigen::Index(out.size()));
+}
+
+}  // namespace coilsim::validation

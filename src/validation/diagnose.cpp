@@ -1,0 +1,263 @@
+#include "validation/diagnose.h"
+
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "validation/effects.h"
+
+namespace coilsim::validation {
+namespace {
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+// chi^2_p quantile at 0.999 divided by p: the F(p, inf) critical value.
+double fCritical(int p) {
+  static const double q[] = {10.83, 13.82, 16.27, 18.47, 20.52, 22.46};
+  p = std::clamp(p, 1, 6);
+  return q[p - 1] / p;
+}
+
+}  // namespace
+
+Candidate candidateFor(const std::string& effect, const Measurement& m) {
+  ensureValidationEffects();
+  Candidate c;
+  c.effect = effect;
+  const double rad = M_PI / 180.0;
+  if (effect == "buoyancy") {
+    c.params = {"buoyancy.medium_density_g_cm3"};
+    c.offValue = {0.0};
+    c.typicalValue = {std::max(m.mediumDensity, 1000.0)};
+  } else if (effect == "drag") {
+    c.params = {"drag.viscosity_pa_s"};
+    c.offValue = {0.0};
+    c.typicalValue = {std::max(m.mediumViscosity, 0.01)};
+  } else if (effect == "gravity_tilt") {
+    c.params = {"gravity_tilt.tilt_a_deg", "gravity_tilt.tilt_b_deg"};
+    c.offValue = {0.0, 0.0};
+    c.typicalValue = {1.0 * rad, 1.0 * rad};
+  } else if (effect == "catheter_compliance") {
+    // Off is the stiffest segment the bounds allow (rigid to well below a micron).
+    c.params = {"catheter_compliance.bending_stiffness_n_mm2"};
+    c.offValue = {1e6 * 1e-6};
+    c.typicalValue = {10.0 * 1e-6};
+  } else if (const Effect* e = EffectRegistry::global().find(effect); e && !e->params().empty() && effect != "self_contact") {
+    const ParamSpec& s = e->params()[0];
+    c.params = {effect + "." + std::string(s.name)};
+    c.offValue = {0.0};
+    c.typicalValue = {s.defaultValue * s.toSI};
+  }
+  // self_contact and parameterless effects: switched on at their defaults, nothing fitted.
+  return c;
+}
+
+std::vector<Candidate> defaultCandidates(const Measurement& m) {
+  ensureValidationEffects();
+  std::vector<Candidate> out;
+  for (const char* e : {"buoyancy", "drag", "gravity_tilt", "catheter_compliance", "self_contact"})
+    if (EffectRegistry::global().find(e)) out.push_back(candidateFor(e, m));
+  return out;
+}
+
+ModelParams withCandidate(const ModelParams& p, const Candidate& c) {
+  ModelParams q = p;
+  if (!q.effect(c.effect)) q.effects.push_back(EffectRegistry::global().use(c.effect));
+  for (size_t k = 0; k < c.params.size(); ++k) setParam(q, c.params[k], c.offValue[k]);
+  return q;
+}
+
+Fingerprint fingerprint(const Comparison& cmp, const std::vector<StageComparison>& stages) {
+  Fingerprint f;
+  const Measurement& m = cmp.measurement();
+  const Vec3 g = m.gravity.norm() > 0 ? Vec3(m.gravity.normalized()) : Vec3(0, 0, -1);
+  std::vector<double> logL, logR;
+  for (size_t k = 0; k < stages.size(); ++k) {
+    const StageComparison& s = stages[k];
+    double ag = 0, ac = 0, ax = 0, third[3] = {0, 0, 0};
+    const size_t n = s.sim.size();
+    const double l = s.s.empty() ? 0 : s.s.back();
+    for (size_t i = 0; i < n; ++i) {
+      const Vec3 r = s.sim[i] - s.meas[i];
+      const Vec3 t = (s.sim[std::min(n - 1, i + 1)] - s.sim[i == 0 ? 0 : i - 1]).normalized();
+      Vec3 et = t - t.dot(g) * g;
+      et = et.norm() > 1e-6 ? Vec3(et.normalized()) : Vec3::Zero();
+      const double rg = r.dot(g), rt = r.dot(et);
+      ag += rg * rg, ac += rt * rt, ax += std::max(0.0, r.squaredNorm() - rg * rg - rt * rt);
+      third[std::min(2, int(3 * s.s[i] / std::max(l, 1e-12)))] += r.squaredNorm();
+    }
+    const double nn = std::max<double>(1, double(n)), tot = ag + ac + ax;
+    f.rmsAlongGravity.push_back(std::sqrt(ag / nn));
+    f.rmsAlongCoil.push_back(std::sqrt(ac / nn));
+    f.rmsAcross.push_back(std::sqrt(ax / nn));
+    f.rmsTotal.push_back(std::sqrt(tot / nn));
+    f.shareProximal.push_back(tot > 0 ? third[0] / tot : 0);
+    f.shareMiddle.push_back(tot > 0 ? third[1] / tot : 0);
+    f.shareDistal.push_back(tot > 0 ? third[2] / tot : 0);
+    if (f.rmsTotal.back() / std::sqrt(3.0) > 1.5 * s.sigma) f.aboveNoise = true;
+    if (l > 0 && f.rmsTotal.back() > 0) logL.push_back(std::log(l)), logR.push_back(std::log(f.rmsTotal.back()));
+  }
+  if (logL.size() >= 2) {
+    double ml = 0, mr = 0;
+    for (size_t i = 0; i < logL.size(); ++i) ml += logL[i], mr += logR[i];
+    ml /= double(logL.size()), mr /= double(logL.size());
+    double sxy = 0, sxx = 0;
+    for (size_t i = 0; i < logL.size(); ++i) sxy += (logL[i] - ml) * (logR[i] - mr), sxx += (logL[i] - ml) * (logL[i] - ml);
+    f.growthExponent = sxx > 0 ? sxy / sxx : 0;
+  }
+  // The summary: the dominant direction and place over all stages.
+  double G = 0, C = 0, X = 0, P = 0, M = 0, D = 0;
+  for (size_t k = 0; k < f.rmsTotal.size(); ++k) {
+    G += f.rmsAlongGravity[k] * f.rmsAlongGravity[k], C += f.rmsAlongCoil[k] * f.rmsAlongCoil[k];
+    X += f.rmsAcross[k] * f.rmsAcross[k];
+    P += f.shareProximal[k], M += f.shareMiddle[k], D += f.shareDistal[k];
+  }
+  const double T = std::max(G + C + X, 1e-300);
+  std::string dir = G / T > 0.5 ? "mostly along gravity" : C / T > 0.5 ? "mostly along the coil" : X / T > 0.5 ? "mostly across the coil, horizontal" : "in all directions";
+  std::string where = P > M && P > D && P / (P + M + D) > 0.45 ? "concentrated near the clamp"
+                      : D / std::max(P + M + D, 1e-300) > 0.5 ? "concentrated distally"
+                                                              : "spread along the coil";
+  f.summary = std::string(f.aboveNoise ? "Residual above the noise floor, " : "Residual at the noise floor, ") + dir +
+              " (" + fmt("%.0f", 100 * G / T) + " % along gravity, " + fmt("%.0f", 100 * C / T) + " % along the coil, " +
+              fmt("%.0f", 100 * X / T) + " % across), " + where + ", growing with deployed length as l^" +
+              fmt("%.1f", f.growthExponent) + ".";
+  if (f.aboveNoise) {
+    if (G / T > 0.5 && f.growthExponent > 1.5)
+      f.summary += " A sag error that grows fast with length points to the load or the stiffness (weight, buoyancy, E).";
+    else if (X / T > 0.5)
+      f.summary += " A sideways error points to a force not along gravity (tilted bench, flow) or to the tip's roll.";
+    else if (P / (P + M + D) > 0.45)
+      f.summary += " An error at the clamp points to the boundary condition (catheter compliance, tip angle).";
+    else if (C / T > 0.5)
+      f.summary += " An error along the coil points to its length or arc-length bookkeeping (push, stretch, friction).";
+  }
+  return f;
+}
+
+Diagnosis diagnose(StageSimulator& sim, const Comparison& cmp, const ModelParams& start, const DiagnoseOptions& o) {
+  Diagnosis d;
+  auto say = [&](const std::string& s) {
+    if (o.progress) o.progress(s);
+  };
+  std::vector<std::string> baseFit = o.fit;
+  if (std::find(baseFit.begin(), baseFit.end(), "young_modulus") == baseFit.end())
+    baseFit.insert(baseFit.begin(), "young_modulus");
+  say("baseline: fitting " + std::to_string(baseFit.size()) + " parameter(s)");
+  FitOptions fo;
+  fo.params = baseFit;
+  d.baseline = identify(sim, cmp, start, fo);
+  if (!d.baseline.ok) {
+    d.message = "baseline fit failed: " + d.baseline.message;
+    return d;
+  }
+  d.baselineStages = cmp.compare(sim.run(d.baseline.params, true));
+  d.fingerprint = fingerprint(cmp, d.baselineStages);
+  const Eigen::VectorXd r0 = d.baseline.residual;
+  const double rss0 = std::max(d.baseline.rss, 1e-300);
+  const double m = double(r0.size());
+  double sigma = 0;
+  for (size_t k = 0; k < cmp.measurement().stages.size(); ++k) sigma = std::max(sigma, cmp.stageSigma(k));
+
+  const std::vector<Candidate> cands = o.candidates.empty() ? defaultCandidates(cmp.measurement()) : o.candidates;
+  // 1. Screening.
+  for (const Candidate& c : cands) {
+    say("screening " + c.effect);
+    CandidateResult cr;
+    cr.effect = c.effect;
+    const ModelParams off = withCandidate(d.baseline.params, c);
+    const Eigen::VectorXd rOff = evaluateResiduals(sim, cmp, off, true);
+    if (rOff.size() != r0.size()) {
+      cr.note = "the model fails with this effect switched on";
+      d.candidates.push_back(cr);
+      continue;
+    }
+    Eigen::MatrixXd Jc(r0.size(), std::max<Eigen::Index>(1, Eigen::Index(c.params.size())));
+    if (c.params.empty()) {
+      ModelParams on = off;  // on at defaults: a single column on - off
+      Jc.col(0) = rOff - r0;
+    }
+    for (size_t k = 0; k < c.params.size(); ++k) {
+      ModelParams on = off;
+      setParam(on, c.params[k], c.typicalValue[k]);
+      const Eigen::VectorXd rOn = evaluateResiduals(sim, cmp, on, true);
+      Jc.col(Eigen::Index(k)) = rOn.size() == rOff.size() ? Eigen::VectorXd((rOn - rOff) / (c.typicalValue[k] - c.offValue[k]))
+                                                          : Eigen::VectorXd::Zero(r0.size());
+    }
+    const Eigen::MatrixXd& J0 = d.baseline.jacobian;
+    Eigen::MatrixXd A(r0.size(), J0.cols() + Jc.cols());
+    A << J0, Jc;
+    const Eigen::VectorXd base = c.params.empty() ? r0 : rOff;
+    const Eigen::VectorXd delta = A.colPivHouseholderQr().solve(-base);
+    const double predicted = (base + A * delta).squaredNorm();
+    cr.screenedFraction = std::clamp((rss0 - predicted) / rss0, 0.0, 1.0);
+    if (c.params.empty()) cr.screenedFraction = std::clamp((rss0 - rOff.squaredNorm()) / rss0, 0.0, 1.0);
+    // How much of the candidate's signature the baseline parameters can already make.
+    if (Jc.norm() * std::abs(c.typicalValue.empty() ? 1.0 : c.typicalValue[0] - c.offValue[0]) < 1e-9 * std::max(1e-3, r0.norm())) {
+      cr.note = c.effect == "drag" ? "no effect on these stages (drag acts only in a push_history stage)"
+                                   : "no measurable effect on these stages";
+      cr.screenedFraction = 0;
+    } else if (J0.cols() > 0) {
+      const Eigen::MatrixXd proj = J0 * J0.colPivHouseholderQr().solve(Jc);
+      const double unique = (Jc - proj).norm() / Jc.norm();
+      if (unique < 0.03)
+        cr.note = "indistinguishable from the baseline parameters in these data (" + fmt("%.1f", 100 * unique) +
+                  " % of its signature is its own)";
+    }
+    cr.explainedFraction = cr.screenedFraction;
+    d.candidates.push_back(cr);
+  }
+  // 2. Full refits of the best screened candidates (and of those without parameters).
+  std::vector<size_t> order(d.candidates.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return d.candidates[a].screenedFraction > d.candidates[b].screenedFraction;
+  });
+  int refits = 0;
+  for (const size_t i : order) {
+    CandidateResult& cr = d.candidates[i];
+    const Candidate& c = cands[i];
+    if (!cr.note.empty() && cr.note.rfind("indistinguishable", 0) != 0) continue;
+    if (!c.params.empty() && refits >= o.refitTop) continue;
+    if (!c.params.empty()) ++refits;
+    say("refitting with " + c.effect);
+    ModelParams s = withCandidate(d.baseline.params, c);
+    for (size_t k = 0; k < c.params.size(); ++k) setParam(s, c.params[k], c.typicalValue[k]);
+    FitOptions f2;
+    f2.params = baseFit;
+    f2.params.insert(f2.params.end(), c.params.begin(), c.params.end());
+    cr.fit = identify(sim, cmp, s, f2);
+    if (!cr.fit.ok) {
+      cr.note = "refit failed: " + cr.fit.message;
+      continue;
+    }
+    cr.refitted = true;
+    const double drop = rss0 - cr.fit.rss;
+    cr.explainedFraction = std::clamp(drop / rss0, 0.0, 1.0);
+    const int pc = std::max<int>(1, int(c.params.size()));
+    const double dof = std::max(1.0, m - double(f2.params.size()));
+    const double F = drop > 0 ? (drop / pc) / (cr.fit.rss / dof) : 0.0;
+    const double removedRmsPerNode = std::sqrt(std::max(0.0, drop) / (m / 3.0));
+    cr.significant = F > fCritical(pc) && removedRmsPerNode > 0.5 * sigma;
+    for (const StageComparison& sc : cmp.compare(sim.run(cr.fit.params, true))) cr.stageErrorAfter.push_back(sc.metrics.stageError);
+  }
+  std::stable_sort(d.candidates.begin(), d.candidates.end(), [](const CandidateResult& a, const CandidateResult& b) {
+    if (a.significant != b.significant) return a.significant;
+    return a.explainedFraction > b.explainedFraction;
+  });
+  if (!d.candidates.empty() && d.candidates.front().significant)
+    d.verdict = d.candidates.front().effect + " explains " + fmt("%.0f", 100 * d.candidates.front().explainedFraction) +
+                " % of the baseline residual, significantly above the noise.";
+  else if (d.fingerprint.aboveNoise)
+    d.verdict = "No candidate explains the residual significantly; it is above the noise floor: see the fingerprint.";
+  else
+    d.verdict = "The base model explains the data to the noise level: no effect is needed.";
+  d.ok = true;
+  return d;
+}
+
+}  // namespace coilsim::validation

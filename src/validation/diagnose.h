@@ -1,0 +1,83 @@
+#pragma once
+// Which physical effect is missing? The baseline (the paper's model with
+// young_modulus and the requested parameters fitted) leaves a residual r0.
+// Each candidate effect, tested alone:
+//  1. linearised screening: its parameters' sensitivities J_c (secant from
+//     "off" to a typical value), stacked with the baseline Jacobian J_0,
+//     predict how much of r0 a joint linear fit removes;
+//  2. the best candidates (and any that the screening cannot judge) are
+//     refitted in full (baseline parameters + the candidate's);
+//  3. explained fraction = (RSS_0 - RSS_c) / RSS_0; significance against the
+//     noise: the drop must pass an F test at 99.9 % (chi^2_p / p quantile,
+//     m large) AND the removed RMS per node must exceed half the point noise
+//     (a statistically certain but physically invisible gain is not a finding).
+// The fingerprint describes r0 so a user can reason about an effect not in
+// the list: its split along gravity / along the coil / across, where along
+// the arc length it concentrates, how it grows with the deployed length.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "validation/identify.h"
+
+namespace coilsim::validation {
+
+// A candidate effect and which of its parameters are fitted, with the value
+// meaning "effect off" and the typical value the screening differences to.
+struct Candidate {
+  std::string effect;
+  std::vector<std::string> params;   // "effect.param"
+  std::vector<double> offValue, typicalValue;  // SI, one per param
+};
+
+// The candidates the workbench knows for measurement `m` (buoyancy, drag,
+// gravity_tilt, catheter_compliance, and self_contact when registered).
+std::vector<Candidate> defaultCandidates(const Measurement& m);
+// One candidate by name, for an effect defined elsewhere: its first
+// parameter fitted from 0 (off) to its default value.
+Candidate candidateFor(const std::string& effect, const Measurement& m);
+// `p` with the candidate switched on at its off values.
+ModelParams withCandidate(const ModelParams& p, const Candidate& c);
+
+struct Fingerprint {
+  std::vector<double> rmsAlongGravity, rmsAlongCoil, rmsAcross;  // (stages) m, per node
+  std::vector<double> rmsTotal;                                  // (stages) m, per node
+  std::vector<double> shareProximal, shareMiddle, shareDistal;    // (stages) of sum |r|^2, thirds of the arc length
+  double growthExponent = 0;  // RMS ~ l^k over the stages' deployed lengths (0 with one stage)
+  bool aboveNoise = false;    // RMS per coordinate above 1.5 sigma in some stage
+  std::string summary;        // one paragraph
+};
+
+Fingerprint fingerprint(const Comparison& cmp, const std::vector<StageComparison>& stages);
+
+struct CandidateResult {
+  std::string effect;
+  double screenedFraction = 0;   // linear prediction
+  double explainedFraction = 0;  // after the full refit (screening only: the prediction)
+  bool refitted = false;
+  bool significant = false;
+  std::string note;              // e.g. "indistinguishable from young_modulus"
+  FitResult fit;                 // when refitted
+  std::vector<double> stageErrorAfter;  // (stages) in file order
+};
+
+struct Diagnosis {
+  bool ok = false;
+  std::string message;
+  FitResult baseline;
+  std::vector<StageComparison> baselineStages;
+  std::vector<CandidateResult> candidates;  // best first
+  Fingerprint fingerprint;
+  std::string verdict;
+};
+
+struct DiagnoseOptions {
+  std::vector<std::string> fit = {"young_modulus"};  // baseline parameters (young_modulus always)
+  std::vector<Candidate> candidates;                 // empty: defaultCandidates
+  int refitTop = 3;
+  std::function<void(const std::string&)> progress;  // one line per phase
+};
+
+Diagnosis diagnose(StageSimulator& sim, const Comparison& cmp, const ModelParams& start, const DiagnoseOptions& o);
+
+}  // namespace coilsim::validation

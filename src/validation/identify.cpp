@@ -1,0 +1,163 @@
+#include "validation/identify.h"
+
+#include <nlopt.hpp>
+
+#include <Eigen/LU>
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+
+namespace coilsim::validation {
+namespace {
+
+// The optimiser's variable for a parameter: log(value) on wide positive
+// ranges, value / (hi - lo) otherwise, so every variable moves on a scale of 1.
+double toVar(const FitParam& f, double v) { return f.logScale ? std::log(v) : v / (f.hi - f.lo); }
+double fromVar(const FitParam& f, double z) { return f.logScale ? std::exp(z) : z * (f.hi - f.lo); }
+
+struct Problem {
+  StageSimulator* sim;
+  const Comparison* cmp;
+  ModelParams params;
+  std::vector<FitParam> fit;
+  const FitOptions* options;
+  int evaluations = 0;
+  double best = INFINITY;
+  std::vector<double> bestZ;
+  std::vector<double> history;
+  size_t residualSize = 0;
+};
+
+double objective(const std::vector<double>& z, std::vector<double>& grad, void* data) {
+  auto& P = *static_cast<Problem*>(data);
+  (void)grad;  // derivative-free
+  ModelParams p = P.params;
+  for (size_t k = 0; k < z.size(); ++k) setParam(p, P.fit[k].name, fromVar(P.fit[k], z[k]));
+  const auto sims = P.sim->run(p, true);
+  const Eigen::VectorXd r = P.cmp->residuals(sims);
+  const Eigen::VectorXd s = P.cmp->sigmas(sims);
+  ++P.evaluations;
+  double chi2 = 1e30;
+  if (r.size() == Eigen::Index(P.residualSize) && r.allFinite()) chi2 = r.cwiseQuotient(s).squaredNorm();
+  const double rms = r.size() ? std::sqrt(r.squaredNorm() / double(r.size())) : 0.0;
+  P.history.push_back(rms);
+  if (chi2 < P.best) P.best = chi2, P.bestZ = z;
+  if (P.options->progress) P.options->progress(P.evaluations, rms);
+  return chi2;
+}
+
+}  // namespace
+
+Eigen::VectorXd evaluateResiduals(StageSimulator& sim, const Comparison& cmp, const ModelParams& p, bool warm) {
+  return cmp.residuals(sim.run(p, warm));
+}
+
+Eigen::MatrixXd residualJacobian(StageSimulator& sim, const Comparison& cmp, const ModelParams& p,
+                                 const std::vector<FitParam>& params) {
+  Eigen::MatrixXd J;
+  for (size_t k = 0; k < params.size(); ++k) {
+    const FitParam& f = params[k];
+    const double v = getParam(p, f.name);
+    // A step of 1e-3 of the variable's scale, kept inside the bounds.
+    double h = f.logScale ? 1e-3 * v : 1e-3 * (f.hi - f.lo);
+    const double up = std::min(v + h, f.hi), down = std::max(v - h, f.lo);
+    ModelParams a = p, b = p;
+    setParam(a, f.name, up);
+    setParam(b, f.name, down);
+    const Eigen::VectorXd ra = evaluateResiduals(sim, cmp, a, true), rb = evaluateResiduals(sim, cmp, b, true);
+    if (J.size() == 0) J.resize(ra.size(), Eigen::Index(params.size()));
+    if (ra.size() != J.rows() || rb.size() != J.rows()) return {};
+    J.col(Eigen::Index(k)) = (ra - rb) / (up - down);
+  }
+  return J;
+}
+
+FitResult identify(StageSimulator& sim, const Comparison& cmp, const ModelParams& start, const FitOptions& options) {
+  FitResult res;
+  res.params = start;
+  Problem P{&sim, &cmp, start, {}, &options};
+  for (const std::string& name : options.params) {
+    std::string why;
+    const auto f = describeParam(name, start, cmp.measurement(), why);
+    if (!f) {
+      res.message = why;
+      return res;
+    }
+    P.fit.push_back(*f);
+  }
+  // A cold evaluation (push from zero) fixes the equilibrium branch the warm starts follow.
+  const auto sims0 = sim.run(start, false);
+  const Eigen::VectorXd r0 = cmp.residuals(sims0);
+  for (const auto& s : sims0)
+    if (!s.ok) {
+      res.message = "the start model fails: " + s.message;
+      res.residual = r0;
+      return res;
+    }
+  P.residualSize = size_t(r0.size());
+  const size_t n = P.fit.size();
+  if (n > 0) {
+    std::vector<double> z(n), lo(n), hi(n);
+    for (size_t k = 0; k < n; ++k) {
+      const FitParam& f = P.fit[k];
+      const double v = std::clamp(getParam(start, f.name), f.lo, f.hi);
+      z[k] = toVar(f, v), lo[k] = toVar(f, f.lo), hi[k] = toVar(f, f.hi);
+    }
+    nlopt::opt opt(nlopt::LN_BOBYQA, unsigned(n));
+    opt.set_lower_bounds(lo);
+    opt.set_upper_bounds(hi);
+    opt.set_min_objective(objective, &P);
+    opt.set_ftol_abs(options.chi2Tolerance);
+    opt.set_xtol_rel(1e-7);
+    opt.set_maxeval(options.maxEvaluations);
+    std::vector<double> step(n);
+    for (size_t k = 0; k < n; ++k) step[k] = std::min(0.1, 0.25 * (hi[k] - lo[k]));  // 10 % of E for log variables
+    opt.set_initial_step(step);
+    double f = 0;
+    try {
+      opt.optimize(z, f);
+    } catch (const std::exception& e) {
+      // Roundoff-limited and max-evaluation stops still leave the best point.
+      if (P.bestZ.empty()) {
+        res.message = std::string("optimiser failed: ") + e.what();
+        return res;
+      }
+    }
+    if (!P.bestZ.empty()) z = P.bestZ;
+    for (size_t k = 0; k < n; ++k) setParam(res.params, P.fit[k].name, fromVar(P.fit[k], z[k]));
+  }
+  res.evaluations = P.evaluations;
+  res.history = P.history;
+  const auto sims = sim.run(res.params, true);
+  res.residual = cmp.residuals(sims);
+  res.rss = res.residual.squaredNorm();
+  res.chi2 = res.residual.cwiseQuotient(cmp.sigmas(sims)).squaredNorm();
+  const double m = double(res.residual.size());
+  if (n > 0) {
+    res.jacobian = residualJacobian(sim, cmp, res.params, P.fit);
+    const double s2 = res.rss / std::max(1.0, m - double(n));
+    if (res.jacobian.size()) {
+      // In scaled variables (each column times its parameter's magnitude),
+      // so a modulus in Pa and an angle in rad do not ruin the conditioning.
+      Eigen::VectorXd scale = Eigen::VectorXd::Zero(Eigen::Index(n));
+      for (size_t k = 0; k < n; ++k)
+        scale[Eigen::Index(k)] = std::max(std::abs(getParam(res.params, P.fit[k].name)), 1e-6 * (P.fit[k].hi - P.fit[k].lo));
+      const Eigen::MatrixXd Js = res.jacobian * scale.asDiagonal();
+      const Eigen::MatrixXd inv = (Js.transpose() * Js).completeOrthogonalDecomposition().pseudoInverse();
+      res.covariance = s2 * scale.asDiagonal() * inv * scale.asDiagonal();
+    }
+  }
+  for (size_t k = 0; k < n; ++k) {
+    FittedValue v;
+    v.name = P.fit[k].name;
+    v.unit = P.fit[k].unit;
+    v.toSI = P.fit[k].toSI;
+    v.value = getParam(res.params, v.name);
+    v.sigma = res.covariance.size() ? std::sqrt(std::max(0.0, res.covariance(Eigen::Index(k), Eigen::Index(k)))) : NAN;
+    res.fitted.push_back(v);
+  }
+  res.ok = true;
+  return res;
+}
+
+}  // namespace coilsim::validation

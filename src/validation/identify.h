@@ -1,0 +1,71 @@
+#pragma once
+// Identification: the named parameters minimising the sum of squared node
+// residuals (compare.h), within bounds, by NLopt.
+//
+// Why NLopt rather than Ceres: the problem has 1 to 6 parameters, each
+// residual evaluation is a full static continuation whose derivatives we
+// only have by finite differences, and every parameter has physical bounds.
+// NLopt offers bound-constrained derivative-free algorithms (BOBYQA: a
+// quadratic model of the objective built from its own evaluations, the
+// right tool for a smooth least-squares cost with no analytic gradient) and
+// gradient ones (SLSQP, LBFGS) behind one small C library that Debian ships
+// (libnlopt); Ceres would bring glog, gflags and SuiteSparse for a solver
+// designed for thousands of parameters with automatic derivatives we cannot
+// provide through the beam solver.
+//
+// Stopping rule tied to the noise: the cost is chi^2 = sum (r / sigma)^2
+// with sigma the stage's point_sigma; the search stops when an iteration
+// improves chi^2 by less than 0.01, since a parameter change that moves
+// chi^2 by 1 is a one-sigma change, so further digits are below the noise.
+// Uncertainties: cov = s^2 (J^T J)^-1 with J the central-difference
+// Jacobian of the residuals at the optimum and s^2 = RSS / (m - p).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "validation/compare.h"
+#include "validation/params.h"
+
+namespace coilsim::validation {
+
+struct FitOptions {
+  std::vector<std::string> params;  // names (params.h); empty: nothing fitted, only evaluated
+  int maxEvaluations = 120;
+  double chi2Tolerance = 0.01;
+  // Called after each evaluation (evaluation count, RMS residual per coordinate in m).
+  std::function<void(int, double)> progress;
+};
+
+struct FittedValue {
+  std::string name, unit;
+  double value = 0, sigma = 0;  // SI
+  double toSI = 1;              // edge = SI / toSI
+};
+
+struct FitResult {
+  bool ok = false;
+  std::string message;
+  ModelParams params;                 // the fitted model
+  std::vector<FittedValue> fitted;    // one per FitOptions::params
+  Eigen::VectorXd residual;           // at the optimum, m
+  Eigen::MatrixXd jacobian;           // d residual / d parameter (SI), at the optimum
+  Eigen::MatrixXd covariance;         // SI
+  double rss = 0;                     // m^2
+  double chi2 = 0;
+  int evaluations = 0;
+  std::vector<double> history;        // RMS residual per coordinate (m) after each evaluation
+};
+
+// Fits `options.params` starting from `start` (which must have every named
+// effect switched on). Fails (ok = false, message) on an unknown parameter
+// or when no simulation succeeds.
+FitResult identify(StageSimulator& sim, const Comparison& cmp, const ModelParams& start, const FitOptions& options);
+
+// Residuals of `p` (a warm-started evaluation), m.
+Eigen::VectorXd evaluateResiduals(StageSimulator& sim, const Comparison& cmp, const ModelParams& p, bool warm);
+
+// Central-difference Jacobian of the residuals at `p` with respect to `names`.
+Eigen::MatrixXd residualJacobian(StageSimulator& sim, const Comparison& cmp, const ModelParams& p,
+                                 const std::vector<FitParam>& params);
+
+}  // namespace coilsim::validation

@@ -1,0 +1,230 @@
+#include "validation/simulate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "physics/deployment.h"
+#include "physics/integrator.h"
+#include "validation/effects.h"
+
+namespace coilsim::validation {
+namespace {
+
+struct Built {
+  Model model;
+  Deployment dep;
+};
+
+Built build(const Measurement& m, const ModelParams& p, int beams, double timeStep) {
+  ModelDef def;
+  def.timeStep = timeStep;
+  def.gravity = m.gravity;
+  def.damping = {0.0, 0.0};  // the paper's model: no damping beyond the integrator's
+  def.effects.push_back(EffectRegistry::global().use("gravity"));
+  bool compliant = false;
+  for (const EffectUse& e : p.effects) {
+    def.effects.push_back(e);
+    compliant = compliant || (e.enabled && releasesClamp(e));
+  }
+  DeploymentDef d;
+  d.coilLength = m.coil.length;
+  d.coilBeams = beams;
+  d.coilRest = coilRestCurve(m.coil, p, beams);
+  const double area = M_PI * m.coil.wireRadius * m.coil.wireRadius;
+  d.coilMaterial = {p.youngModulus, shearModulusOf(p.youngModulus, p.poissonRatio), m.coil.massPerLength / area};
+  d.coilSection = circularSection(m.coil.wireRadius, p.poissonRatio);
+  d.tip = m.tip;
+  d.maxPushSpeed = 1e9, d.maxTwistRate = 1e9;  // the file's history is what happened
+  Built b;
+  b.dep = addDeployment(d, def);
+  // A compliant catheter: the tip node hangs on the catheter_compliance
+  // spring instead of the rigid clamp (the constraint stays, holding no DOF,
+  // so the rod still counts as held for the static solver).
+  if (compliant) def.rods[b.dep.chainRod].constraints[0].mask = kFreeDofs;
+  b.model = compileModel(def);
+  return b;
+}
+
+StaticOptions staticOptions() {
+  StaticOptions o;
+  o.loadSteps = 1;  // each push starts from the previous equilibrium under full load
+  o.maxBisections = 8;
+  o.positionTolerance = 1e-9;
+  o.rotationTolerance = 1e-8;
+  return o;
+}
+
+// Pushes from the state's current deployed length to `target` in increments
+// of at most `step`, an equilibrium after each; halves the increment on failure.
+std::string pushStatic(const Built& b, State& s, DeploymentState& ds, double target, double twist, double step) {
+  double inc = step;
+  while (ds.deployed < target - 1e-12) {
+    const double next = std::min(target, ds.deployed + inc);
+    const State saved = s;
+    const DeploymentState savedDs = ds;
+    setDeployment(b.dep, b.model, s, ds, next, twist);
+    const StaticReport r = solveStatic(b.model, s, staticOptions());
+    if (r.converged) {
+      inc = std::min(step, inc * 2);
+      continue;
+    }
+    s = saved, ds = savedDs;
+    inc *= 0.5;
+    if (inc < 1e-3 * step)
+      return "static equilibrium not reached while pushing to " + std::to_string(next * 1e3) + " mm: " + r.message;
+  }
+  return {};
+}
+
+// Deployed length and twist of a push history at time t (linear between samples, held outside).
+void historyAt(const Stage& st, double t, double& l, double& tw) {
+  const auto& h = st.pushHistory;
+  if (t <= h.front().time) { l = h.front().deployed, tw = h.front().twist; return; }
+  if (t >= h.back().time) { l = h.back().deployed, tw = h.back().twist; return; }
+  size_t k = 1;
+  while (h[k].time < t) ++k;
+  const double f = (t - h[k - 1].time) / (h[k].time - h[k - 1].time);
+  l = h[k - 1].deployed + f * (h[k].deployed - h[k - 1].deployed);
+  tw = h[k - 1].twist + f * (h[k].twist - h[k - 1].twist);
+}
+
+StageSim collect(const Built& b, const State& s, const DeploymentState& ds) {
+  StageSim out;
+  const RodState& chain = s.rods[b.dep.chainRod];
+  out.ok = true;
+  for (int i = 0; i < chain.activeNodes; ++i) {
+    out.x.push_back(chain.x[i]);
+    // Node i >= 1 is coil material node j = k + i - 1 at u_j = L - j h; s = l - u_j.
+    const int j = ds.firstOutside + i - 1;
+    out.s.push_back(i == 0 ? 0.0 : ds.deployed - (b.dep.coilLength - j * b.dep.spacing));
+    if (!chain.x[i].allFinite()) out.ok = false, out.message = "non-finite node position";
+  }
+  return out;
+}
+
+}  // namespace
+
+ModelParams ModelParams::nominal(const Measurement& m) {
+  ModelParams p;
+  p.youngModulus = m.coil.hasYoungModulus ? m.coil.youngModulus : 10e9;
+  p.poissonRatio = m.coil.poissonRatio;
+  p.loopDiameter = m.coil.rest.loopDiameter;
+  p.pitch = m.coil.rest.pitch;
+  return p;
+}
+
+EffectUse* ModelParams::effect(std::string_view name) {
+  for (EffectUse& e : effects)
+    if (e.name() == name) return &e;
+  return nullptr;
+}
+const EffectUse* ModelParams::effect(std::string_view name) const {
+  for (const EffectUse& e : effects)
+    if (e.name() == name) return &e;
+  return nullptr;
+}
+
+RestCurve coilRestCurve(const CoilDef& coil, const ModelParams& p, int beams) {
+  switch (coil.rest.type) {
+    case RestShapeDef::Type::Straight: return makeStraight(coil.length, beams);
+    case RestShapeDef::Type::Helix: return makeHelix(coil.length, beams, p.loopDiameter, p.pitch, coil.rest.rightHanded);
+    case RestShapeDef::Type::Polyline: {
+      // The file runs from the distal tip; the deployment from the proximal end.
+      std::vector<Vec3> pts(coil.rest.points.rbegin(), coil.rest.points.rend());
+      return makePolyline(pts, coil.length, beams, FrameRule::Frenet, coil.rest.twistPerLength);
+    }
+  }
+  return makeStraight(coil.length, beams);
+}
+
+StageSimulator::StageSimulator(const Measurement& m, const SimOptions& o) : m_(m), options_(o) {
+  if (!(o.spacing > 0) || !(o.pushIncrement > 0) || !(o.timeStep > 0))
+    throw std::invalid_argument("simulation options must be positive");
+  beams_ = std::max(4, int(std::lround(m.coil.length / o.spacing)));
+  cache_.resize(m.stages.size());
+}
+
+std::vector<StageSim> StageSimulator::run(const ModelParams& p, bool warmStart) {
+  ensureValidationEffects();
+  std::vector<StageSim> out(m_.stages.size());
+  Built b;
+  try {
+    b = build(m_, p, beams_, options_.timeStep);
+  } catch (const std::exception& e) {
+    for (auto& o : out) o.message = e.what();
+    return out;
+  }
+  // Static stages by twist, then deployed length: each continues the previous one.
+  std::vector<size_t> order;
+  for (size_t i = 0; i < m_.stages.size(); ++i) order.push_back(i);
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t c) {
+    const Stage &A = m_.stages[a], &C = m_.stages[c];
+    return A.twist != C.twist ? A.twist < C.twist : A.deployed < C.deployed;
+  });
+  State s = makeState(b.model);
+  DeploymentState ds;
+  bool pushing = false;  // s holds a static continuation at ds
+  for (const size_t i : order) {
+    const Stage& st = m_.stages[i];
+    if (st.dynamic()) continue;
+    Cache& c = cache_[i];
+    if (warmStart && c.valid) {
+      State w = makeState(b.model);
+      DeploymentState wd = initDeployment(b.dep, b.model, w, st.deployed, st.twist);
+      RodState& chain = w.rods[b.dep.chainRod];
+      if (int(c.x.size()) == chain.activeNodes) {
+        std::copy(c.x.begin(), c.x.end(), chain.x.begin());
+        std::copy(c.q.begin(), c.q.end(), chain.q.begin());
+        const StaticReport r = solveStatic(b.model, w, staticOptions());
+        if (r.converged) {
+          out[i] = collect(b, w, wd);
+          c.x.assign(chain.x.begin(), chain.x.begin() + chain.activeNodes);
+          c.q.assign(chain.q.begin(), chain.q.begin() + chain.activeNodes);
+          continue;
+        }
+      }
+    }
+    if (!pushing || ds.twist != st.twist || ds.deployed > st.deployed) {
+      s = makeState(b.model);
+      ds = initDeployment(b.dep, b.model, s, 0.0, st.twist);
+      pushing = true;
+    }
+    const std::string err = pushStatic(b, s, ds, st.deployed, st.twist, options_.pushIncrement);
+    if (!err.empty()) {
+      out[i].message = err;
+      pushing = false;
+      continue;
+    }
+    out[i] = collect(b, s, ds);
+    const RodState& chain = s.rods[b.dep.chainRod];
+    c.valid = true;
+    c.x.assign(chain.x.begin(), chain.x.begin() + chain.activeNodes);
+    c.q.assign(chain.q.begin(), chain.q.begin() + chain.activeNodes);
+  }
+  for (size_t i = 0; i < m_.stages.size(); ++i) {
+    const Stage& st = m_.stages[i];
+    if (!st.dynamic()) continue;
+    State d = makeState(b.model);
+    double l0, tw0;
+    historyAt(st, st.pushHistory.front().time, l0, tw0);
+    DeploymentState dd = initDeployment(b.dep, b.model, d, 0.0, tw0);
+    std::string err = pushStatic(b, d, dd, l0, tw0, options_.pushIncrement);
+    const double h = b.model.timeStep;
+    for (double t = st.pushHistory.front().time; err.empty() && t < st.captureTime - 0.5 * h; t += h) {
+      double l, tw;
+      historyAt(st, t + h, l, tw);
+      setDeployment(b.dep, b.model, d, dd, l, tw);
+      const StepReport r = step(b.model, d);
+      if (!r.ok()) err = "dynamic push failed at t = " + std::to_string(t) + " s: " + r.message;
+    }
+    if (!err.empty()) {
+      out[i].message = err;
+      continue;
+    }
+    out[i] = collect(b, d, dd);
+  }
+  return out;
+}
+
+}  // namespace coilsim::validation
