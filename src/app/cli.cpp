@@ -10,6 +10,10 @@
 #include <vector>
 
 #include "app/bench.h"
+#include "app/mesh_cmd.h"
+#include "app/phantom_cmd.h"
+#include "app/plan_cmd.h"
+#include "app/practice_cmd.h"
 #include "app/run_scene.h"
 #include "physics/effect.h"
 
@@ -30,6 +34,10 @@ void printUsage(std::FILE* to) {
       "usage: coilsim run SCENE [options]   simulate a scene file (scenes/*.json, docs/scene-format.md)\n"
       "       coilsim SCENE [options]       the same\n"
       "       coilsim bench [--json]        time steps and solvers (see README)\n"
+      "       coilsim mesh FILE | phantom --type T --sac-mm D --out F.stl   check a mesh; make an aneurysm phantom\n"
+      "       coilsim plan SCENE|CASE --coils a,b --out DIR   compare catalogue coils in an aneurysm (docs/planning.md)\n"
+      "       coilsim plan-merge DIR... --out DIR             merge plans (e.g. of a Slurm job array)\n"
+      "       coilsim practice CASE ...     play or replay a practice session, write its score sheet\n"
       "       coilsim help                  this text\n"
       "       coilsim --version\n"
       "\n"
@@ -173,6 +181,11 @@ int runCli(int argc, char** argv) {
     return kExitOk;
   }
   if (command == "bench") return runBench(std::vector<std::string>(args.begin() + 1, args.end()));
+  if (command == "mesh") return app::runMeshCommand(std::vector<std::string>(args.begin() + 1, args.end()));
+  if (command == "phantom") return app::runPhantomCommand(std::vector<std::string>(args.begin() + 1, args.end()));
+  if (command == "plan") return app::runPlan(std::vector<std::string>(args.begin() + 1, args.end()));
+  if (command == "plan-merge") return app::runPlanMerge(std::vector<std::string>(args.begin() + 1, args.end()));
+  if (command == "practice") return app::runPractice(std::vector<std::string>(args.begin() + 1, args.end()));
   // `coilsim SCENE ...` is `coilsim run SCENE ...`.
   if (command == "run") args.erase(args.begin());
   else if (command.size() > 1 && command[0] == '-' && !isRunOption(command))

@@ -45,6 +45,15 @@ void readOuts(const Session& session) {
     ImGui::SameLine();
     ImGui::TextDisabled("  moving");
   }
+  const ContactSummary& c = session.contacts();
+  if (!c.available)
+    ImGui::TextDisabled("max wall force: this build has no contact forces");
+  else if (c.contacts == 0)
+    ImGui::TextDisabled("max wall force: no contact");
+  else
+    ImGui::Text("max wall force %.3f mN (%d contacts)", 1e3 * c.maxWallForce, c.contacts);
+  if (session.timelineSize() > 0)
+    ImGui::TextDisabled("timeline: %zu of %zu commands started", session.timelineCursor(), session.timelineSize());
 }
 
 void motionButtons(Session& session, DeviceControls& dc) {

@@ -143,6 +143,8 @@ void Session::refreshDrawData() {
   draw_.points.clear();
   fillDrawData(model_, state_, draw_);
   if (hook_) hook_(model_, state_, draw_);
+  // Arrows up to 3 mm: a coil loop is a few millimetres across.
+  contacts_ = addContactMarkers(state_, 3e-3, draw_);
   largestMoment_ = colourByMoment_ ? colourByBendingMoment(state_, momentScale_, draw_) : 0.0;
 }
 

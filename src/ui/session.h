@@ -16,6 +16,7 @@
 #include "physics/integrator.h"
 #include "physics/model.h"
 #include "physics/state.h"
+#include "ui/contact_overlay.h"
 #include "ui/realtime.h"
 
 namespace coilsim::ui {
@@ -75,6 +76,7 @@ class Session {
   const std::deque<std::string>& deviceMessages() const { return deviceMessages_; }
   // Timeline commands already started.
   size_t timelineCursor() const { return timelineNext_; }
+  size_t timelineSize() const { return deploymentSetup_ ? deploymentSetup_->timeline.size() : 0; }
 
   // Why stepping stopped (a refused step), empty while healthy.
   const std::string& haltMessage() const { return haltMessage_; }
@@ -96,6 +98,8 @@ class Session {
   bool momentColouring() const { return colourByMoment_; }
   // The largest bending moment in the picture when colouring by it, N m.
   double largestMoment() const { return largestMoment_; }
+  // Contacts at the last step (markers are in the draw data's points).
+  const ContactSummary& contacts() const { return contacts_; }
 
  private:
   bool stepAndCheck();
@@ -123,6 +127,7 @@ class Session {
   bool colourByMoment_ = false;
   double momentScale_ = 0;
   double largestMoment_ = 0;
+  ContactSummary contacts_;
 };
 
 }  // namespace coilsim::ui

@@ -1,0 +1,287 @@
+// `coilsim plan`: candidate coils deployed automatically into one aneurysm,
+// compared in DIR/plan.json, DIR/plan.md and a screenshot per coil.
+#include "app/plan_cmd.h"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <sstream>
+
+#include "app/run_scene.h"
+#include "io/json_writer.h"
+#include "io/units.h"
+#include "planning/case_file.h"
+#include "planning/plan.h"
+#ifdef COILSIM_HAVE_UI
+#include "ui/viewer.h"
+#endif
+
+namespace coilsim::app {
+namespace {
+
+using planning::Candidate;
+using planning::CandidateResult;
+using planning::PlanSetup;
+
+int usage(const std::string& message) {
+  std::fprintf(stderr,
+               "coilsim plan: %s\n"
+               "usage: coilsim plan SCENE|CASE --out DIR [--coils a,b,c] [--jobs N] [--sac FILE] [--catalogue DIR]\n"
+               "         [--speed MM_S] [--force-threshold MN] [--spacing MM] [--max-time S]\n"
+               "         [--sensitivity SHIFT_MM,TILT_DEG] [--no-screenshots] [--size WxH]\n"
+               "       coilsim plan-merge DIR... --out DIR\n"
+               "(docs/planning.md)\n",
+               message.c_str());
+  return kExitUsage;
+}
+
+bool number(const std::string& s, double& out) {
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+  return ec == std::errc() && end == s.data() + s.size() && std::isfinite(out);
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, sep);)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+struct PlanArgs {
+  std::string input, out, sac, catalogue, coils;
+  int jobs = 1;
+  bool screenshots = true;
+  int width = 960, height = 720;
+  std::optional<double> speedMmS, thresholdMn, spacingMm, maxTime;
+  std::optional<std::pair<double, double>> sensitivity;
+};
+
+// Parses plan's arguments; returns an error message or "".
+std::string parseArgs(const std::vector<std::string>& args, PlanArgs& a) {
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    auto value = [&](std::string& v) {
+      if (i + 1 >= args.size()) return false;
+      v = args[++i];
+      return true;
+    };
+    auto positive = [&](std::optional<double>& out, const char* what) -> std::string {
+      std::string v;
+      double d = 0;
+      if (!value(v) || !number(v, d) || !(d > 0)) return arg + " needs " + what + " > 0, got \"" + v + "\"";
+      out = d;
+      return "";
+    };
+    std::string v, err;
+    if (arg == "--out") {
+      if (!value(a.out) || a.out.empty()) return "--out needs a directory";
+    } else if (arg == "--coils") {
+      if (!value(a.coils) || split(a.coils, ',').empty()) return "--coils needs names, e.g. --coils framing-3d-5x100,filling-helical-4x80";
+    } else if (arg == "--jobs") {
+      double d = 0;
+      if (!value(v) || !number(v, d) || d < 1 || d > 256 || d != std::floor(d)) return "--jobs needs an integer in [1, 256], got \"" + v + "\"";
+      a.jobs = int(d);
+    } else if (arg == "--sac") {
+      if (!value(a.sac)) return "--sac needs a JSON file holding {\"sac\": {...}}";
+    } else if (arg == "--catalogue") {
+      if (!value(a.catalogue)) return "--catalogue needs a directory of coil files";
+    } else if (arg == "--speed") {
+      if (!(err = positive(a.speedMmS, "a push speed in mm/s")).empty()) return err;
+    } else if (arg == "--force-threshold") {
+      if (!(err = positive(a.thresholdMn, "a tip force in mN")).empty()) return err;
+    } else if (arg == "--spacing") {
+      if (!(err = positive(a.spacingMm, "a beam length in mm")).empty()) return err;
+    } else if (arg == "--max-time") {
+      if (!(err = positive(a.maxTime, "a number of seconds")).empty()) return err;
+    } else if (arg == "--sensitivity") {
+      const std::vector<std::string> parts = value(v) ? split(v, ',') : std::vector<std::string>{};
+      double s = 0, t = 0;
+      if (parts.size() != 2 || !number(parts[0], s) || !number(parts[1], t) || s < 0 || t < 0 || s + t == 0)
+        return "--sensitivity needs SHIFT_MM,TILT_DEG (>= 0, not both 0), e.g. 0.5,5; got \"" + v + "\"";
+      a.sensitivity = std::make_pair(s, t);
+    } else if (arg == "--no-screenshots") {
+      a.screenshots = false;
+    } else if (arg == "--size") {
+      const size_t x = value(v) ? v.find('x') : std::string::npos;
+      double w = 0, h = 0;
+      if (x == std::string::npos || !number(v.substr(0, x), w) || !number(v.substr(x + 1), h) || w < 16 || h < 16 ||
+          w > 8192 || h > 8192)
+        return "--size needs WIDTHxHEIGHT, each in [16, 8192], got \"" + v + "\"";
+      a.width = int(w), a.height = int(h);
+    } else if (!arg.empty() && arg[0] == '-') {
+      return "unknown option \"" + arg + "\"";
+    } else if (a.input.empty()) {
+      a.input = arg;
+    } else {
+      return "plan takes one scene or case file, got \"" + a.input + "\" and \"" + arg + "\"";
+    }
+  }
+  if (a.input.empty()) return "plan needs a scene or case file, e.g. coilsim plan scenes/cases/sphere-7mm.json";
+  if (a.out.empty()) return "plan needs --out DIR";
+  return "";
+}
+
+#ifdef COILSIM_HAVE_UI
+bool screenshot(const PlanSetup& setup, const CandidateResult& r, const PlanArgs& a, const std::string& path,
+                std::string& error) {
+  ui::ViewerOptions v;
+  v.scenePath = setup.label + " - " + r.name + " (" + r.variant + ")";
+  v.width = a.width, v.height = a.height;
+  v.screenshotPath = path;
+  v.drawPanel = false;
+  const auto mesh = setup.sac.mesh;
+  v.addDrawData = [mesh](const Model&, const State&, DrawData& d) {
+    DrawMesh m;
+    m.name = mesh->name;
+    m.vertices = mesh->vertices;
+    m.triangles = mesh->triangles;
+    d.meshes.push_back(std::move(m));
+  };
+  return ui::renderOffscreen(r.model, r.state, v, error);
+}
+#endif
+
+std::string fileSafe(std::string s) {
+  for (char& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
+  return s;
+}
+
+int plan(const PlanArgs& a) {
+  PlanSetup setup;
+  setup.label = a.input;
+  std::vector<io::CoilSpec> chosen;
+  const nlohmann::json doc = io::readJsonFile(a.input);
+  const bool isCase = doc.is_object() && doc.value("format", std::string()) == planning::kCaseFormat;
+  const std::vector<io::CoilSpec> catalogue =
+      io::loadCatalogue(a.catalogue.empty() ? planning::defaultCatalogue() : a.catalogue);
+  if (isCase) {
+    const planning::PracticeCase c = planning::parseCase(doc, a.input);
+    setup.scene = c.scene;
+    setup.sac = a.sac.empty() ? c.sac : planning::loadSac(a.sac);
+    setup.spacingMm = c.spacingMm;
+    setup.deploy.wallForceThreshold = c.goal.maxWallForce;
+    if (a.coils.empty()) chosen = c.coils;
+  } else {
+    setup.scene = io::loadScene(a.input);
+    if (!setup.scene.deployment)
+      return usage(a.input + " has no \"deployment\" block: plan needs a catheter to deploy the coils from");
+    if (a.sac.empty())
+      return usage(a.input + " is a scene: give the sac and neck plane with --sac FILE, or plan a case file (scenes/cases/*.json)");
+    setup.sac = planning::loadSac(a.sac);
+  }
+  for (const std::string& name : split(a.coils, ',')) chosen.push_back(io::findCoil(catalogue, name));
+  if (chosen.empty()) return usage("no coils to plan: give --coils a,b,c");
+  if (a.spacingMm) setup.spacingMm = *a.spacingMm;
+  if (a.speedMmS) setup.deploy.pushSpeed = units::mmPerSToMPerS(*a.speedMmS);
+  if (a.thresholdMn) setup.deploy.forceThreshold = *a.thresholdMn * 1e-3;  // mN -> N
+  if (a.maxTime) setup.deploy.maxTime = *a.maxTime;
+  try {
+    planning::prepareSac(setup);
+  } catch (const std::exception& e) {
+    return usage(a.input + ": " + e.what());
+  }
+  std::vector<Candidate> candidates;
+  for (const io::CoilSpec& c : chosen) {
+    if (a.sensitivity) {
+      for (Candidate& v : planning::sensitivityVariants(c, a.sensitivity->first, a.sensitivity->second))
+        candidates.push_back(std::move(v));
+    } else {
+      candidates.push_back({c, "nominal", Vec3::Zero(), 0});
+    }
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(a.out, ec);
+  if (ec) return usage("cannot create " + a.out + ": " + ec.message());
+  std::fprintf(stderr, "coilsim plan: %zu run(s) on %d thread(s), sac %.1f mm^3\n", candidates.size(), a.jobs,
+               units::mToMm(units::mToMm(units::mToMm(setup.sacVolume))));
+  const std::vector<CandidateResult> results = planning::runCandidates(setup, candidates, a.jobs);
+  nlohmann::ordered_json pj = planning::planJson(setup, results);
+  bool allOk = true;
+  for (size_t i = 0; i < results.size(); ++i) {
+    const CandidateResult& r = results[i];
+    allOk = allOk && r.ok;
+    if (!r.ok) std::fprintf(stderr, "coilsim plan: %s (%s): %s\n", r.name.c_str(), r.variant.c_str(), r.error.c_str());
+    if (!a.screenshots || r.state.rods.empty()) continue;
+#ifdef COILSIM_HAVE_UI
+    const std::string name = fileSafe(r.name + (r.variant == "nominal" ? "" : "-" + r.variant)) + ".png";
+    std::string error;
+    if (screenshot(setup, r, a, (std::filesystem::path(a.out) / name).string(), error))
+      pj["coils"][i]["screenshot"] = name;
+    else
+      std::fprintf(stderr, "coilsim plan: no screenshot of %s: %s\n", r.name.c_str(), error.c_str());
+#endif
+  }
+  io::writeFileAtomic((std::filesystem::path(a.out) / "plan.json").string(), io::formatJson(pj));
+  const std::string md = planning::planMarkdown(pj);
+  io::writeFileAtomic((std::filesystem::path(a.out) / "plan.md").string(), md);
+  std::fputs(md.c_str(), stdout);
+  return allOk ? kExitOk : kExitFailure;
+}
+
+}  // namespace
+
+int runPlan(const std::vector<std::string>& args) {
+  PlanArgs a;
+  if (const std::string err = parseArgs(args, a); !err.empty()) return usage(err);
+  try {
+    return plan(a);
+  } catch (const io::InputError& e) {
+    std::fprintf(stderr, "coilsim plan: %s\n", e.what());
+    return kExitUsage;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "coilsim plan: %s\n", e.what());
+    return kExitFailure;
+  }
+}
+
+int runPlanMerge(const std::vector<std::string>& args) {
+  std::vector<std::string> dirs;
+  std::string out;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--out") {
+      if (i + 1 >= args.size()) return usage("--out needs a directory");
+      out = args[++i];
+    } else if (!args[i].empty() && args[i][0] == '-') {
+      return usage("unknown option \"" + args[i] + "\" for plan-merge");
+    } else {
+      dirs.push_back(args[i]);
+    }
+  }
+  if (dirs.empty() || out.empty()) return usage("plan-merge needs plan directories and --out DIR");
+  try {
+    std::vector<std::string> files;
+    for (const std::string& d : dirs) files.push_back((std::filesystem::path(d) / "plan.json").string());
+    nlohmann::ordered_json merged = planning::mergePlans(files);
+    std::error_code ec;
+    std::filesystem::create_directories(out, ec);
+    if (ec) return usage("cannot create " + out + ": " + ec.message());
+    // Screenshots stay where their task wrote them: point at them from the merged table.
+    size_t k = 0;
+    for (size_t f = 0; f < dirs.size(); ++f) {
+      const nlohmann::json part = io::readJsonFile(files[f]);
+      for (size_t j = 0; j < part["coils"].size(); ++j, ++k)
+        if (merged["coils"][k].contains("screenshot"))
+          merged["coils"][k]["screenshot"] =
+              std::filesystem::relative(std::filesystem::path(dirs[f]) / merged["coils"][k]["screenshot"].get<std::string>(), out)
+                  .string();
+    }
+    io::writeFileAtomic((std::filesystem::path(out) / "plan.json").string(), io::formatJson(merged));
+    const std::string md = planning::planMarkdown(merged);
+    io::writeFileAtomic((std::filesystem::path(out) / "plan.md").string(), md);
+    std::fputs(md.c_str(), stdout);
+    return kExitOk;
+  } catch (const io::InputError& e) {
+    std::fprintf(stderr, "coilsim plan-merge: %s\n", e.what());
+    return kExitUsage;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "coilsim plan-merge: %s\n", e.what());
+    return kExitFailure;
+  }
+}
+
+}  // namespace coilsim::app

@@ -1,0 +1,125 @@
+// Case and sac files -> PracticeCase / Sac.
+#include "planning/case_file.h"
+
+#include <filesystem>
+
+#include "io/mesh_file.h"
+#include "io/units.h"
+
+#ifndef COILSIM_SOURCE_DIR
+#define COILSIM_SOURCE_DIR "."
+#endif
+
+namespace coilsim::planning {
+namespace {
+
+using io::Bounds;
+using io::JsonNode;
+
+Vec3 vec(const std::array<double, 3>& a) { return Vec3(a[0], a[1], a[2]); }
+
+std::string besideFile(const std::string& file, const std::string& relative) {
+  namespace fs = std::filesystem;
+  const fs::path p(relative);
+  return p.is_absolute() ? relative : (fs::path(file).parent_path() / p).lexically_normal().string();
+}
+
+}  // namespace
+
+namespace {
+
+Plane readNeckPlane(const JsonNode& p) {
+  if (!p.isObject()) p.expected("{\"point_mm\": [x, y, z], \"normal\": [x, y, z] (into the sac)}");
+  p.allowKeys({"point_mm", "normal"});
+  Plane plane;
+  plane.point = units::mmToM(1.0) * vec(p.child("point_mm").vec3());
+  const JsonNode nn = p.child("normal");
+  const Vec3 normal = vec(nn.vec3());
+  if (!(normal.norm() > 1e-9)) nn.expected("a non-zero direction");
+  plane.normal = normal.normalized();
+  return plane;
+}
+
+}  // namespace
+
+Sac readSac(const JsonNode& n) {
+  if (!n.isObject())
+    n.expected("a sac object: {\"phantom\": STL with its .phantom.json sidecar}, or {\"mesh\": FILE, \"neck_plane\": {...}}, "
+               "or {\"sphere\": {...}, \"neck_plane\": {...}}");
+  n.allowKeys({"phantom", "mesh", "sphere", "neck_plane"});
+  const int given = int(n.has("phantom")) + int(n.has("mesh")) + int(n.has("sphere"));
+  if (given != 1) n.fail("give exactly one of \"phantom\", \"mesh\" and \"sphere\"");
+  if (n.has("phantom")) {
+    // A generated phantom: its surface, and the neck plane from its sidecar (mm).
+    if (n.has("neck_plane")) n.child("neck_plane").fail("a phantom's neck plane comes from its sidecar; drop \"neck_plane\"");
+    const std::string stl = besideFile(n.file(), n.child("phantom").string());
+    const geometry::PhantomInfo info = io::readPhantomSidecar(io::phantomSidecarPath(stl));
+    auto mesh = std::make_shared<TriangleMesh>(io::loadMeshFile(stl));
+    return makeSac(std::move(mesh), Plane{units::mmToM(1.0) * info.neck.point, info.neck.normal});
+  }
+  const Plane neck = readNeckPlane(n.child("neck_plane"));
+  if (n.has("mesh")) {
+    auto mesh = std::make_shared<TriangleMesh>(io::loadMeshFile(besideFile(n.file(), n.child("mesh").string())));
+    return makeSac(std::move(mesh), neck);
+  }
+  const JsonNode s = n.child("sphere");
+  if (!s.isObject()) s.expected("{\"centre_mm\": [x, y, z], \"radius_mm\": r, \"subdivisions\": 5}");
+  s.allowKeys({"centre_mm", "radius_mm", "subdivisions"});
+  const Vec3 centre = units::mmToM(1.0) * vec(s.child("centre_mm").vec3());
+  const double radius = units::mmToM(s.child("radius_mm").number(Bounds{0.5, 50, false, false, "mm"}));
+  const int level = s.has("subdivisions") ? int(s.child("subdivisions").integer(1, 6)) : 5;
+  if (std::abs(neck.signedDistance(centre)) >= radius) n.child("neck_plane").fail("the neck plane does not cut the sac sphere");
+  return makeSac(std::make_shared<TriangleMesh>(makeIcosphere(centre, radius, level, "sac sphere")), neck);
+}
+
+PracticeCase parseCase(const nlohmann::json& document, const std::string& file) {
+  const JsonNode root(document, file);
+  if (!root.isObject()) root.expected("a case object {\"format\": \"coilsim-case/1\", ...}");
+  root.allowKeys({"format", "name", "description", "scene", "sac", "coils", "catalogue", "goal", "spacing_mm"});
+  root.child("format").oneOf({kCaseFormat});
+  PracticeCase c;
+  c.file = file;
+  c.name = root.child("name").string();
+  if (auto d = root.optional("description")) c.description = d->string(true);
+  const JsonNode scene = root.child("scene");
+  if (scene.exists() && scene.value().is_string()) c.scene = io::loadScene(besideFile(file, scene.string()));
+  else if (scene.isObject()) {
+    c.scene = io::parseScene(scene.value(), file + " (scene)");
+    io::checkScene(c.scene);
+  } else scene.expected("a scene file path (relative to the case file) or an inline scene object");
+  if (!c.scene.deployment) scene.fail("the scene has no \"deployment\" block: a case needs a catheter and a coil");
+  c.sac = readSac(root.child("sac"));
+  const std::string catalogue = root.has("catalogue") ? besideFile(file, root.child("catalogue").string())
+                                                      : defaultCatalogue();
+  const std::vector<io::CoilSpec> all = io::loadCatalogue(catalogue);
+  for (const JsonNode& name : root.child("coils").items(1, 50, "an array of catalogue coil names")) {
+    try {
+      c.coils.push_back(io::findCoil(all, name.string()));
+    } catch (const io::InputError& e) {
+      name.fail(e.what());
+    }
+  }
+  if (auto g = root.optional("goal")) {
+    g->allowKeys({"min_packing_density", "no_protrusion", "max_wall_force_mN", "detach_in_sac"});
+    if (auto v = g->optional("min_packing_density")) c.goal.minPackingDensity = v->number(Bounds::closed(0, 1));
+    if (auto v = g->optional("no_protrusion")) c.goal.noProtrusion = v->boolean();
+    if (auto v = g->optional("max_wall_force_mN")) c.goal.maxWallForce = 1e-3 * v->number(Bounds::positive());
+    if (auto v = g->optional("detach_in_sac")) c.goal.detachInSac = v->boolean();
+  }
+  if (auto s = root.optional("spacing_mm")) c.spacingMm = s->number(Bounds{0.05, 5, false, false, "mm"});
+  return c;
+}
+
+std::string defaultCatalogue() { return std::string(COILSIM_SOURCE_DIR) + "/assets/coils"; }
+
+PracticeCase loadCase(const std::string& path) { return parseCase(io::readJsonFile(path), path); }
+
+Sac loadSac(const std::string& path) {
+  const nlohmann::json doc = io::readJsonFile(path);
+  const JsonNode root(doc, path);
+  if (!root.isObject()) root.expected("an object {\"sac\": {...}}");
+  root.allowKeys({"sac", "description"});
+  return readSac(root.child("sac"));
+}
+
+}  // namespace coilsim::planning

@@ -1,0 +1,52 @@
+#pragma once
+// Case files ("coilsim-case/1", scenes/cases/*.json, docs/planning.md): an
+// aneurysm (scene with a deployment block, and the sac: surface and neck
+// plane), the catheter position (the scene's), the coil set a trainee or a
+// plan may use, and the goal. Read through the io layer; errors are
+// io::InputErrors naming the file, the JSON path and what was expected.
+#include <string>
+#include <vector>
+
+#include "io/coil_catalogue.h"
+#include "io/json_reader.h"
+#include "io/scene.h"
+#include "planning/sac_geometry.h"
+
+namespace coilsim::planning {
+
+inline constexpr const char* kCaseFormat = "coilsim-case/1";
+
+struct Goal {
+  double minPackingDensity = 0.25;   // 0-1
+  bool noProtrusion = true;
+  double maxWallForce = 0.1;         // N (safety threshold for the score's "time above")
+  bool detachInSac = true;
+};
+
+struct PracticeCase {
+  std::string file, name, description;
+  io::SceneSpec scene;               // with a deployment block
+  Sac sac;
+  std::vector<io::CoilSpec> coils;   // the coil set, from the catalogue
+  Goal goal;
+  double spacingMm = 0.5;            // beam length of the coils
+};
+
+// The "sac" block: {"sphere": {"centre_mm", "radius_mm", "subdivisions"}, "neck_plane": {"point_mm", "normal"}}.
+// The normal points into the sac. Throws InputError.
+Sac readSac(const io::JsonNode& node);
+
+// Reads a case: "scene" is a path relative to the case file or an inline
+// scene object; "coils" names catalogue coils ("catalogue": directory
+// relative to the case file, default the project's assets/coils).
+PracticeCase loadCase(const std::string& path);
+PracticeCase parseCase(const nlohmann::json& document, const std::string& file);
+
+// The project's coil catalogue directory (assets/coils of the source tree).
+std::string defaultCatalogue();
+
+// A sac from a stand-alone JSON file holding a "sac" block at its root
+// ({"sac": {...}}), for `coilsim plan SCENE --sac FILE`.
+Sac loadSac(const std::string& path);
+
+}  // namespace coilsim::planning

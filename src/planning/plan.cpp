@@ -1,0 +1,223 @@
+// Candidate runs, threads, plan.json / plan.md, merging.
+#include "planning/plan.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+#include "io/json_reader.h"
+#include "io/units.h"
+#include "physics/deployment.h"
+#include "planning/contact_forces.h"
+
+namespace coilsim::planning {
+namespace {
+
+using nlohmann::ordered_json;
+
+// Edge units of plan reports, through units.h where it has them.
+double mm(double m) { return units::mToMm(m); }
+double mm3(double m3) { return units::mToMm(units::mToMm(units::mToMm(m3))); }
+double milliNewton(double n) { return n * 1e3; }  // mN: the unit clinical force papers report
+
+// Rounded for reports, so plans diff cleanly.
+double round6(double v) {
+  if (!std::isfinite(v) || v == 0) return v;
+  const double scale = std::pow(10.0, 5 - int(std::floor(std::log10(std::abs(v)))));
+  return std::round(v * scale) / scale;
+}
+
+// Rodrigues rotation of v about unit axis k by angle a.
+Vec3 rotate(const Vec3& v, const Vec3& k, double a) {
+  return v * std::cos(a) + k.cross(v) * std::sin(a) + k * k.dot(v) * (1 - std::cos(a));
+}
+
+}  // namespace
+
+void prepareSac(PlanSetup& setup) {
+  if (!setup.sac.mesh) throw std::invalid_argument("the plan has no sac surface");
+  setup.sac = makeSac(setup.sac.mesh, setup.sac.neck);
+  setup.sacVolume = volumeOnSide(*setup.sac.mesh, setup.sac.neck);
+  if (!(setup.sacVolume > 0))
+    throw std::invalid_argument("the neck plane leaves no volume on the sac side (does its normal point into the sac?)");
+  setup.neck = sampleNeck(setup.sac);
+}
+
+CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const ContactForceSource& contacts) {
+  CandidateResult r;
+  r.name = c.coil.name;
+  r.variant = c.variant;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    io::SceneSpec spec = setup.scene;
+    if (!spec.deployment) throw std::invalid_argument(setup.label + " has no \"deployment\" block");
+    io::DeploymentSpec& dep = *spec.deployment;
+    io::applyCoil(c.coil, setup.spacingMm, dep);
+    dep.initialDeployedMm = std::min(dep.initialDeployedMm, 0.5 * dep.lengthMm);
+    dep.catheter.tipPositionMm += c.tipShiftMm;
+    if (c.tipTiltDeg != 0)
+      dep.catheter.direction = rotate(dep.catheter.direction.normalized(), dep.catheter.referenceNormal.normalized(),
+                                      units::degToRad(c.tipTiltDeg));
+    io::CompiledScene compiled = io::compileSceneWithDeployment(spec);
+    r.model = compileModel(compiled.model);
+    r.state = makeState(r.model);
+    const Deployment& d = *compiled.deployment;
+    DeploymentState ds = initDeployment(d, r.model, r.state, compiled.initialDeployed, compiled.initialTwist);
+    r.deploy = autoDeploy(d, r.model, r.state, ds, setup.deploy, contacts ? contacts : ContactForceSource(wallContactForces));
+    r.sac = measureSac(setup.sac, setup.sacVolume, setup.neck, coilLines(r.model, r.state, d.chainRod, d.tipNode + 1), setup.metrics);
+    r.occlusion = occlusionClass(r.sac.packingDensity, r.sac.neckCoverage);
+    r.ok = r.deploy.ok;
+    r.error = r.deploy.error;
+  } catch (const std::exception& e) {
+    r.ok = false;
+    r.error = e.what();
+  }
+  r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+std::vector<CandidateResult> runCandidates(const PlanSetup& setup, const std::vector<Candidate>& candidates, int jobs,
+                                           const ContactForceSource& contacts) {
+  std::vector<CandidateResult> results(candidates.size());
+  std::atomic<size_t> next{0};
+  auto worker = [&] {
+    for (size_t i = next++; i < candidates.size(); i = next++) results[i] = runCandidate(setup, candidates[i], contacts);
+  };
+  const int n = std::max(1, std::min<int>(jobs, int(candidates.size())));
+  std::vector<std::thread> threads;
+  for (int k = 1; k < n; ++k) threads.emplace_back(worker);
+  worker();
+  for (std::thread& t : threads) t.join();
+  return results;
+}
+
+std::vector<Candidate> sensitivityVariants(const io::CoilSpec& coil, double shiftMm, double tiltDeg) {
+  std::vector<Candidate> v;
+  v.push_back({coil, "nominal", Vec3::Zero(), 0});
+  // The axes across the exit direction are set per scene by runCandidate's
+  // catheter; here shifts are along the scene axes, which is what a user
+  // reading "tip 0.5 mm higher" means.
+  const char* names[3] = {"x", "y", "z"};
+  for (int a = 0; a < 3; ++a)
+    for (const double s : {-shiftMm, shiftMm}) {
+      Vec3 shift = Vec3::Zero();
+      shift[a] = s;
+      char label[48];
+      std::snprintf(label, sizeof label, "tip %s%+g mm", names[a], s);
+      v.push_back({coil, label, shift, 0});
+    }
+  for (const double t : {-tiltDeg, tiltDeg}) {
+    char label[48];
+    std::snprintf(label, sizeof label, "tilt %+g deg", t);
+    v.push_back({coil, label, Vec3::Zero(), t});
+  }
+  return v;
+}
+
+ordered_json planJson(const PlanSetup& setup, const std::vector<CandidateResult>& results) {
+  ordered_json plan;
+  plan["format"] = "coilsim-plan/1";
+  plan["scene"] = setup.label;
+  plan["sac_volume_mm3"] = round6(mm3(setup.sacVolume));
+  plan["neck_area_mm2"] = round6(mm(mm(setup.neck.area())));
+  plan["push_speed_mm_s"] = round6(mm(setup.deploy.pushSpeed));
+  plan["tip_force_threshold_mN"] = round6(milliNewton(setup.deploy.forceThreshold));
+  ordered_json coils = ordered_json::array();
+  for (const CandidateResult& r : results) {
+    ordered_json c;
+    c["name"] = r.name;
+    c["variant"] = r.variant;
+    c["ok"] = r.ok;
+    if (!r.ok) c["error"] = r.error;
+    c["packing_density"] = round6(r.sac.packingDensity);
+    c["sac_volume_mm3"] = round6(mm3(r.sac.sacVolume));
+    c["coil_volume_mm3"] = round6(mm3(r.sac.coilVolume));
+    c["coil_length_in_sac_mm"] = round6(mm(r.sac.coilLengthInSac));
+    c["neck_coverage"] = round6(r.sac.neckCoverage);
+    c["protruding"] = r.sac.protruding;
+    c["protruding_length_mm"] = round6(mm(r.sac.protrudingLength));
+    // Without a contact effect there is no wall force to report: null, not 0.
+    if (r.deploy.wallForcesAvailable) {
+      c["max_wall_force_mN"] = round6(milliNewton(r.deploy.wall.max));
+      c["mean_wall_force_mN"] = round6(milliNewton(r.deploy.wall.mean()));
+    } else {
+      c["max_wall_force_mN"] = nullptr;
+      c["mean_wall_force_mN"] = nullptr;
+    }
+    c["kickback_mm"] = round6(mm(r.deploy.maxKickback));
+    c["max_deployment_force_mN"] = round6(milliNewton(r.deploy.maxDeploymentForce));
+    c["max_tip_force_mN"] = round6(milliNewton(r.deploy.maxTipForce));
+    c["corrections"] = r.deploy.corrections;
+    c["occlusion_class"] = r.occlusion;
+    c["occlusion"] = occlusionClassName(r.occlusion);
+    c["simulated_s"] = round6(r.deploy.time);
+    c["wall_s"] = round6(r.wallSeconds);
+    coils.push_back(std::move(c));
+  }
+  plan["coils"] = std::move(coils);
+  return plan;
+}
+
+std::string planMarkdown(const ordered_json& plan) {
+  std::string md = "# Coil plan: " + plan.value("scene", std::string("?")) + "\n\n";
+  char buf[512];
+  std::snprintf(buf, sizeof buf, "Sac volume %.1f mm^3 (closed by the neck plane).\n\n",
+                plan.value("sac_volume_mm3", 0.0));
+  md += buf;
+  md += "| coil | variant | packing | coil vol. mm^3 | neck cov. | protruding | max wall mN | kickback mm | "
+        "push force mN | twists | class | ok |\n";
+  md += "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& c : plan.at("coils")) {
+    const std::string wall = c["max_wall_force_mN"].is_null() ? "n/a" : [&] {
+      char w[32];
+      std::snprintf(w, sizeof w, "%.3g", c["max_wall_force_mN"].get<double>());
+      return std::string(w);
+    }();
+    std::snprintf(buf, sizeof buf, "| %s | %s | %.1f %% | %.2f | %.0f %% | %s | %s | %.3g | %.3g | %d | %s | %s |\n",
+                  c["name"].get<std::string>().c_str(), c["variant"].get<std::string>().c_str(),
+                  100 * c["packing_density"].get<double>(), c["coil_volume_mm3"].get<double>(),
+                  100 * c["neck_coverage"].get<double>(), c["protruding"].get<bool>() ? "yes" : "no", wall.c_str(),
+                  c["kickback_mm"].get<double>(), c["max_deployment_force_mN"].get<double>(),
+                  c["corrections"].get<int>(), c["occlusion"].get<std::string>().c_str(),
+                  c["ok"].get<bool>() ? "yes" : ("no: " + c.value("error", std::string())).c_str());
+    md += buf;
+    if (c.contains("screenshot")) md += "\n![" + c["name"].get<std::string>() + "](" + c["screenshot"].get<std::string>() + ")\n\n";
+  }
+  md += "\npacking = coil volume (pi r^2 times the coil length inside the sac) / sac volume; class: Raymond-Roy-like "
+        "prediction from packing and neck coverage (thresholds in docs/planning.md). n/a: this build has no contact "
+        "forces to report.\n";
+  return md;
+}
+
+ordered_json mergePlans(const std::vector<std::string>& files) {
+  ordered_json merged;
+  merged["format"] = "coilsim-plan/1";
+  ordered_json coils = ordered_json::array();
+  std::string scenes;
+  for (const std::string& f : files) {
+    const nlohmann::json doc = io::readJsonFile(f);
+    const io::JsonNode root(doc, f);
+    if (!root.isObject()) root.expected("a coilsim-plan/1 object");
+    root.child("format").oneOf({"coilsim-plan/1"});
+    const std::string scene = root.child("scene").string();
+    if (scenes.empty()) {
+      scenes = scene;
+      merged["scene"] = scene;
+      merged["sac_volume_mm3"] = root.child("sac_volume_mm3").number();
+    } else if (scene != scenes) {
+      root.child("scene").fail("plans of different scenes cannot be merged: \"" + scenes + "\" and \"" + scene + "\"");
+    }
+    for (const io::JsonNode& c : root.child("coils").items(0, SIZE_MAX, "an array of coil results")) {
+      c.child("name").string();
+      coils.push_back(ordered_json(c.value()));
+    }
+  }
+  merged["coils"] = std::move(coils);
+  return merged;
+}
+
+}  // namespace coilsim::planning

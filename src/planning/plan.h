@@ -1,0 +1,79 @@
+#pragma once
+// Coil-choice planning: each candidate coil is deployed automatically into the
+// same aneurysm from the same catheter position (or small variations of it,
+// for sensitivity), headless, and the outcomes are compared side by side.
+// Candidates are independent: runCandidates runs them on several threads,
+// one Model and State each.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "io/coil_catalogue.h"
+#include "io/scene.h"
+#include "physics/model.h"
+#include "physics/state.h"
+#include "planning/auto_deploy.h"
+#include "planning/metrics.h"
+#include "planning/sac_geometry.h"
+
+namespace coilsim::planning {
+
+// Everything the candidates share.
+struct PlanSetup {
+  std::string label;           // scene or case file, for reports
+  io::SceneSpec scene;         // has a deployment block; each candidate replaces its coil
+  Sac sac;
+  double sacVolume = 0;        // m^3, volumeOnSide(sac)
+  NeckGrid neck;
+  double spacingMm = 0.5;      // beam length of the candidate coils
+  AutoDeployOptions deploy;
+  MetricOptions metrics;
+};
+
+// Fills sacVolume and neck from sac; throws std::invalid_argument if the
+// neck plane leaves no volume on the sac side.
+void prepareSac(PlanSetup& setup);
+
+// One run: a coil and a catheter tip variation (sensitivity).
+struct Candidate {
+  io::CoilSpec coil;
+  std::string variant = "nominal";
+  Vec3 tipShiftMm = Vec3::Zero();  // added to the catheter tip position
+  double tipTiltDeg = 0;           // exit direction turned about the reference normal
+};
+
+struct CandidateResult {
+  std::string name, variant;
+  bool ok = false;
+  std::string error;
+  SacMetrics sac;
+  int occlusion = 3;
+  AutoDeployResult deploy;
+  double wallSeconds = 0;  // wall time of the run
+  Model model;             // final configuration, for the screenshot
+  State state;
+};
+
+// Deploys one candidate; never throws (errors land in `error`).
+CandidateResult runCandidate(const PlanSetup& setup, const Candidate& candidate, const ContactForceSource& contacts = {});
+
+// All candidates on up to `jobs` threads; results in the candidates' order.
+std::vector<CandidateResult> runCandidates(const PlanSetup& setup, const std::vector<Candidate>& candidates, int jobs,
+                                           const ContactForceSource& contacts = {});
+
+// Sensitivity variants of a coil: nominal, tip shifted by +-shift along the
+// two axes across the exit direction, exit direction tilted by +-tilt.
+std::vector<Candidate> sensitivityVariants(const io::CoilSpec& coil, double shiftMm, double tiltDeg);
+
+// DIR/plan.json body: {"format": "coilsim-plan/1", "scene", "sac_volume_mm3", "coils": [...]}.
+nlohmann::ordered_json planJson(const PlanSetup& setup, const std::vector<CandidateResult>& results);
+// The same as a Markdown table with a short reading guide.
+std::string planMarkdown(const nlohmann::ordered_json& plan);
+
+// Merges plan.json documents (e.g. one per Slurm array task) into one; throws
+// io::InputError naming the file if one is not a coilsim-plan/1 document.
+nlohmann::ordered_json mergePlans(const std::vector<std::string>& planFiles);
+
+}  // namespace coilsim::planning

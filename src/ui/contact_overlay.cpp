@@ -1,0 +1,60 @@
+#include "ui/contact_overlay.h"
+
+#include <algorithm>
+
+namespace coilsim::ui {
+namespace {
+
+// The contact fields are read only if the State has them (a build without
+// the contact effects has no RodState::contact): the requires-expression
+// names every field used, so a State without them compiles to "none".
+template <class Rod>
+void visit(const Rod& r, ContactSummary& sum, double& maxForce, DrawData* out, double scale) {
+  if constexpr (requires {
+                  r.contact.wall;
+                  r.contact.self;
+                  r.contact.rod;
+                  r.contact.wallForce;
+                  r.contact.wall.front().segment;
+                  r.contact.wall.front().s;
+                  r.contact.wall.front().normal;
+                  r.contact.wall.front().normalForce;
+                }) {
+    sum.available = true;
+    for (double f : r.contact.wallForce) sum.maxWallForce = std::max(sum.maxWallForce, f);
+    const auto* lists = &r.contact.wall;
+    for (const auto* list : {&r.contact.wall, &r.contact.self, &r.contact.rod}) {
+      for (const auto& c : *list) {
+        if (c.segment < 0 || c.segment + 1 >= r.activeNodes) continue;
+        if (!out) {
+          ++sum.contacts;
+          maxForce = std::max(maxForce, c.normalForce);
+          continue;
+        }
+        DrawPoint p;
+        p.position = (1 - c.s) * r.x[size_t(c.segment)] + c.s * r.x[size_t(c.segment) + 1];
+        p.vector = c.normal * (c.normalForce * scale);
+        p.colour = list == lists ? Colour(1.0f, 0.85f, 0.1f, 1.0f) : Colour(0.2f, 0.9f, 1.0f, 1.0f);
+        out->points.push_back(p);
+      }
+    }
+  } else {
+    (void)r, (void)sum, (void)maxForce, (void)out, (void)scale;
+  }
+}
+
+}  // namespace
+
+ContactSummary addContactMarkers(const State& state, double arrowLength, DrawData& out) {
+  ContactSummary sum;
+  double maxForce = 0;
+  // First the largest force (for the arrows' scale), then the markers.
+  for (const RodState& r : state.rods)
+    if (r.active) visit(r, sum, maxForce, nullptr, 0);
+  const double scale = maxForce > 0 ? arrowLength / maxForce : 0;
+  for (const RodState& r : state.rods)
+    if (r.active) visit(r, sum, maxForce, &out, scale);
+  return sum;
+}
+
+}  // namespace coilsim::ui

@@ -1,0 +1,21 @@
+#pragma once
+// Contact points and forces as markers (DrawPoint with a force arrow), and
+// the largest wall force for the panel, read from what the contact effects
+// leave in the State (RodState::contact). GL-free.
+#include "physics/draw_data.h"
+#include "physics/state.h"
+
+namespace coilsim::ui {
+
+struct ContactSummary {
+  bool available = false;  // this build's State carries contact forces
+  int contacts = 0;        // wall, self and rod contacts found at the last step
+  double maxWallForce = 0; // N, largest normal force of a wall on one node
+};
+
+// Appends one point per contact (at the contact on the centre line; wall
+// contacts yellow, self and rod contacts cyan) with an arrow along the
+// force on the rod, the largest `arrowLength` m long. Returns the summary.
+ContactSummary addContactMarkers(const State& state, double arrowLength, DrawData& out);
+
+}  // namespace coilsim::ui

@@ -1,0 +1,124 @@
+// `coilsim plan` and `coilsim practice` run as a user runs them.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kBinary = COILSIM_BINARY;
+const std::string kSource = COILSIM_SOURCE_DIR;
+
+int run(const std::string& args, std::string* output = nullptr) {
+  const std::string log = (fs::temp_directory_path() / "coilsim-plan-test.log").string();
+  const int status = std::system((kBinary + " " + args + " > " + log + " 2>&1").c_str());
+  if (output) {
+    std::ifstream in(log);
+    std::stringstream s;
+    s << in.rdbuf();
+    *output = s.str();
+  }
+  return WEXITSTATUS(status);
+}
+
+bool haveUi() {
+  std::string help;
+  run("help", &help);
+  return help.find("--screenshot") != std::string::npos;
+}
+
+TEST(PlanCommand, TwoCoilsGiveTheTableAndTheImages) {
+  const fs::path out = fs::temp_directory_path() / "coilsim-plan-test";
+  fs::remove_all(out);
+  std::string log;
+  const int code = run("plan " + kSource + "/scenes/cases/sphere-7mm-wide-neck.json --coils finishing-2x10,finishing-3x40 " +
+                           "--jobs 2 --speed 10 --size 320x240 --out " + out.string(),
+                       &log);
+  ASSERT_EQ(code, 0) << log;
+  std::ifstream in(out / "plan.json");
+  const nlohmann::json plan = nlohmann::json::parse(in);
+  ASSERT_EQ(plan["coils"].size(), 2u);
+  // The spherical sac closed by the neck plane: 4/3 pi R^3 minus the cap of height R + z.
+  const double R = 3.5, hc = R - 2.5;
+  const double sac = 4.0 / 3.0 * M_PI * R * R * R - M_PI * hc * hc * (3 * R - hc) / 3.0;
+  const bool ui = haveUi();
+  for (const auto& c : plan["coils"]) {
+    EXPECT_TRUE(c["ok"].get<bool>()) << c.dump();
+    EXPECT_NEAR(c["sac_volume_mm3"].get<double>(), sac, 0.01 * sac);
+    const double pd = c["packing_density"].get<double>();
+    EXPECT_GE(pd, 0.0);
+    EXPECT_LE(pd, 1.0);
+    // Packing is the coil volume over the sac volume, and the coil volume pi r^2 l of what is inside.
+    EXPECT_NEAR(pd, c["coil_volume_mm3"].get<double>() / c["sac_volume_mm3"].get<double>(), 1e-4 * pd + 1e-9);
+    EXPECT_NEAR(c["coil_volume_mm3"].get<double>(), M_PI * 0.127 * 0.127 * c["coil_length_in_sac_mm"].get<double>(),
+                1e-4 * c["coil_volume_mm3"].get<double>() + 1e-9);
+    EXPECT_TRUE(c.contains("protruding") && c["protruding"].is_boolean());
+    EXPECT_TRUE(c.contains("max_wall_force_mN"));
+    EXPECT_TRUE(c.contains("kickback_mm"));
+    if (ui) {
+      ASSERT_TRUE(c.contains("screenshot")) << c.dump();
+      EXPECT_GT(fs::file_size(out / c["screenshot"].get<std::string>()), 1000u);
+    }
+  }
+  EXPECT_EQ(plan["coils"][0]["name"], "finishing-2x10");
+  EXPECT_TRUE(fs::exists(out / "plan.md"));
+
+  // Two halves of a sweep merge into one table.
+  const fs::path out2 = fs::temp_directory_path() / "coilsim-plan-test-merged";
+  fs::remove_all(out2);
+  ASSERT_EQ(run("plan-merge " + out.string() + " " + out.string() + " --out " + out2.string(), &log), 0) << log;
+  std::ifstream in2(out2 / "plan.json");
+  EXPECT_EQ(nlohmann::json::parse(in2)["coils"].size(), 4u);
+  fs::remove_all(out);
+  fs::remove_all(out2);
+}
+
+TEST(PlanCommand, BadInputExitsTwoNamingTheProblem) {
+  std::string log;
+  EXPECT_EQ(run("plan " + kSource + "/scenes/cases/sphere-7mm-wide-neck.json --coils no-such-coil --out /tmp/x", &log), 2);
+  EXPECT_NE(log.find("no-such-coil"), std::string::npos) << log;
+  EXPECT_EQ(run("plan " + kSource + "/scenes/free-deploy-helix.json --coils finishing-2x10 --out /tmp/x", &log), 2);
+  EXPECT_NE(log.find("--sac"), std::string::npos) << log;
+  EXPECT_EQ(run("plan --out /tmp/x", &log), 2);
+  EXPECT_EQ(run("practice " + kSource + "/scenes/cases/sphere-7mm-wide-neck.json --out /tmp/x.json", &log), 2);
+}
+
+TEST(PracticeCommand, ReplayWritesTheSameScoreSheet) {
+  const fs::path dir = fs::temp_directory_path() / "coilsim-practice-test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  {
+    std::ofstream t(dir / "timeline.json");
+    t << R"({"format": "coilsim-timeline/1", "commands": [
+      {"t_s": 0.0, "push": {"speed_mm_s": 10}}, {"t_s": 1.5, "detach": {}}]})";
+  }
+  const std::string c = kSource + "/scenes/cases/sphere-7mm-wide-neck.json";
+  std::string log;
+  ASSERT_EQ(run("practice " + c + " --coil finishing-2x10 --view xray --input " + (dir / "timeline.json").string() +
+                    " --record " + (dir / "session.json").string() + " --out " + (dir / "score.json").string(),
+                &log),
+            0)
+      << log;
+  ASSERT_EQ(run("practice " + c + " --replay " + (dir / "session.json").string() + " --out " +
+                    (dir / "replayed.json").string(),
+                &log),
+            0)
+      << log;
+  auto read = [](const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  };
+  EXPECT_EQ(read(dir / "score.json"), read(dir / "replayed.json"));
+  EXPECT_NE(read(dir / "score.json").find("\"fluoroscopy_time_s\": 2.5"), std::string::npos) << read(dir / "score.json");
+  fs::remove_all(dir);
+}
+
+}  // namespace

@@ -1,0 +1,71 @@
+// Practice sessions: the score sheet follows the inputs, and a replay of the
+// recording reproduces it bit for bit.
+#include "planning/practice.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "io/json_writer.h"
+#include "io/timeline.h"
+
+namespace coilsim::planning {
+namespace {
+
+const std::string kCase = std::string(COILSIM_SOURCE_DIR) + "/scenes/cases/sphere-7mm-wide-neck.json";
+
+TEST(Practice, ScoreFollowsTheInputsAndReplayReproducesItExactly) {
+  const PracticeCase pc = loadCase(kCase);
+  // Push 4 mm, pull 1 mm back (a repositioning), twist, push out the rest of the 10 mm coil, detach.
+  const std::vector<TimedCommand> timeline = io::timelineFromText(R"({"format": "coilsim-timeline/1", "commands": [
+      {"t_s": 0.0, "push": {"speed_mm_s": 8, "distance_mm": 4}},
+      {"t_s": 0.6, "pull": {"speed_mm_s": 5, "distance_mm": 1}},
+      {"t_s": 0.9, "twist": {"rate_deg_s": 180, "angle_deg": 45}},
+      {"t_s": 1.2, "push": {"speed_mm_s": 8}},
+      {"t_s": 2.4, "detach": {}}]})",
+                                                                   "inline timeline");
+  const std::vector<std::pair<double, std::string>> views = {{0.25, "xray"}, {1.0, "3d"}, {1.5, "biplane"}};
+  const double end = 2.6;
+  nlohmann::ordered_json recording;
+  const ScoreSheet live = playSession(pc, "finishing-2x10", timeline, views, end, &recording);
+  ASSERT_TRUE(live.ok) << live.error;
+  // Against the inputs: 4 - 1 + 7 mm = the whole 10 mm coil out, one pull, detached.
+  EXPECT_NEAR(live.coilLengthPlaced, 10e-3, 1e-9);
+  EXPECT_EQ(live.repositionings, 1);
+  EXPECT_TRUE(live.detached);
+  // X-ray from 0.25 to 1.0 s and from 1.5 s to the end: 0.75 + 1.1 s.
+  EXPECT_NEAR(live.fluoroscopyTime, 1.85, 1e-9);
+  EXPECT_NEAR(live.time, end, 1e-12);
+  EXPECT_GE(live.packingDensity, 0.0);
+  EXPECT_LE(live.packingDensity, 1.0);
+  // The catheter tip is 0.5 mm inside the neck plane, inside the sphere: detached in the sac.
+  EXPECT_TRUE(live.detachInSac);
+
+  const std::string path = (std::filesystem::temp_directory_path() / "coilsim-practice-session.json").string();
+  io::writeFileAtomic(path, io::formatJson(recording));
+  const SessionRecording s = loadSession(path);
+  std::filesystem::remove(path);
+  EXPECT_EQ(s.coil, "finishing-2x10");
+  const ScoreSheet replayed = playSession(pc, s.coil, s.timeline, s.views, s.end);
+  EXPECT_EQ(io::formatJson(scoreJson(replayed)), io::formatJson(scoreJson(live)));
+  EXPECT_EQ(replayed.packingDensity, live.packingDensity);  // bit for bit, not just as printed
+  EXPECT_EQ(replayed.maxTipForce, live.maxTipForce);
+}
+
+TEST(Practice, UnknownCoilAndBadSessionAreInputErrors) {
+  const PracticeCase pc = loadCase(kCase);
+  EXPECT_THROW(PracticeSession(pc, "no-such-coil"), io::InputError);
+  try {
+    parseSession(nlohmann::json::parse(R"({"format": "coilsim-session/1", "case": "c", "coil": "x", "end_s": -1,
+        "timeline": {"format": "coilsim-timeline/1", "commands": []}, "views": []})"),
+                 "s.json");
+    ADD_FAILURE() << "negative end_s accepted";
+  } catch (const io::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("s.json: /end_s"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace coilsim::planning
