@@ -97,9 +97,11 @@ void DeploymentController::advance(const Deployment& dep, const Model& model, St
     if (twistLeft_ == 0) twistRate_ = 0;
   }
   if (deployed >= dep.coilLength && (pushRate_ > 0 || retractRate_ > 0)) {
+    // Said once, when the limit is reached (a push stops on it): retracting
+    // the catheter over a coil that is already out hits it every step.
+    if (pushRate_ > 0 || ds.deployed < dep.coilLength - 1e-9) notes.push_back("the coil is fully deployed");
     deployed = dep.coilLength;
     pushRate_ = std::min(pushRate_, 0.0);
-    notes.push_back("the coil is fully deployed");
   }
   if (deployed <= 0 && pushRate_ < 0) {
     deployed = 0;

@@ -203,6 +203,18 @@ TEST(DeploymentTest, InvalidCommandsAreRefusedWithAReasonAndChangeNothing) {
   EXPECT_NE(d.ctl.command(d.dep, d.ds, {K::Twist, 1.0, 0.1}), "") << "twist after detach";
 }
 
+TEST(DeploymentTest, ReachingTheCoilsEndIsSaidOnceEvenWhileTheCatheterIsRetracted) {
+  Bench b = makeBench(false, 20.0, kLength - 0.002);
+  using K = DeviceCommand::Kind;
+  const TimelineRun r = runTimeline(b.dep, b.model, b.state, b.ds, b.ctl,
+                                    {push(0, 0.01, 0), {0.3, {K::Retract, 0.005, 0.001}}}, 0.6);
+  ASSERT_TRUE(r.ok);
+  int said = 0;
+  for (const std::string& line : r.log) said += line.find("fully deployed") != std::string::npos;
+  EXPECT_EQ(said, 1) << "one limit reached, one message (the retraction keeps pressing on it every step)";
+  EXPECT_DOUBLE_EQ(b.ds.deployed, kLength);
+}
+
 TEST(DeploymentTest, ReplayingATimelineIsBitForBit) {
   auto once = [] {
     Bench b = makeBench(true, 5.0);
