@@ -10,11 +10,13 @@
 #include <vector>
 
 #include "app/bench.h"
+#include "app/diagnose_cmd.h"
 #include "app/mesh_cmd.h"
 #include "app/phantom_cmd.h"
 #include "app/plan_cmd.h"
 #include "app/practice_cmd.h"
 #include "app/run_scene.h"
+#include "app/validate_cmd.h"
 #include "physics/effect.h"
 
 // The build passes the project version; this fallback only serves builds
@@ -38,6 +40,8 @@ void printUsage(std::FILE* to) {
       "       coilsim plan SCENE|CASE --coils a,b --out DIR   compare catalogue coils in an aneurysm (docs/planning.md)\n"
       "       coilsim plan-merge DIR... --out DIR             merge plans (e.g. of a Slurm job array)\n"
       "       coilsim practice CASE ...     play or replay a practice session, write its score sheet\n"
+      "       coilsim validate FILE [--effects a,b] [--fit young_modulus,...] --out DIR   model vs a measurement\n"
+      "       coilsim diagnose FILE [--fit ...] --out DIR   which physical effect is missing (docs/validation.md)\n"
       "       coilsim help                  this text\n"
       "       coilsim --version\n"
       "\n"
@@ -185,6 +189,8 @@ int runCli(int argc, char** argv) {
   if (command == "phantom") return app::runPhantomCommand(std::vector<std::string>(args.begin() + 1, args.end()));
   if (command == "plan") return app::runPlan(std::vector<std::string>(args.begin() + 1, args.end()));
   if (command == "plan-merge") return app::runPlanMerge(std::vector<std::string>(args.begin() + 1, args.end()));
+  if (command == "validate") return app::runValidate(std::vector<std::string>(args.begin() + 1, args.end()));
+  if (command == "diagnose") return app::runDiagnose(std::vector<std::string>(args.begin() + 1, args.end()));
   if (command == "practice") return app::runPractice(std::vector<std::string>(args.begin() + 1, args.end()));
   // `coilsim SCENE ...` is `coilsim run SCENE ...`.
   if (command == "run") args.erase(args.begin());

@@ -1,7 +1,8 @@
 #pragma once
 // Simulated stages against the measurement: the measured centre lines are
 // fitted once by smoothing splines; each simulation is resampled at its
-// nodes' arc lengths and scored (metrics.h), and its residuals
+// nodes' arc lengths (the measured arc length calibrated by one factor per
+// stage, see compare.cpp) and scored (metrics.h), and its residuals
 // x_sim - x_meas(s) form the least-squares vector of identification.
 #include <string>
 #include <vector>
@@ -19,6 +20,7 @@ struct StageComparison {
   std::vector<double> s;                 // (nodes) arc length, m
   std::vector<Vec3> sim, meas, ref;      // (nodes) m
   double sigma = 0;                      // noise SD per coordinate used for this stage, m
+  double arcScale = 1;                   // calibration of the measured arc length (compare.cpp)
 };
 
 class Comparison {

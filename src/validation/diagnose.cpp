@@ -23,6 +23,11 @@ double fCritical(int p) {
   return q[p - 1] / p;
 }
 
+// A finding must explain at least this share of the baseline residual: a
+// candidate that trims a few per cent off a residual left by something else
+// (e.g. the differences between two rod models) is not the missing effect.
+constexpr double kMinExplained = 0.25;
+
 }  // namespace
 
 Candidate candidateFor(const std::string& effect, const Measurement& m) {
@@ -242,7 +247,7 @@ Diagnosis diagnose(StageSimulator& sim, const Comparison& cmp, const ModelParams
     const double dof = std::max(1.0, m - double(f2.params.size()));
     const double F = drop > 0 ? (drop / pc) / (cr.fit.rss / dof) : 0.0;
     const double removedRmsPerNode = std::sqrt(std::max(0.0, drop) / (m / 3.0));
-    cr.significant = F > fCritical(pc) && removedRmsPerNode > 0.5 * sigma;
+    cr.significant = F > fCritical(pc) && removedRmsPerNode > sigma && cr.explainedFraction >= kMinExplained;
     for (const StageComparison& sc : cmp.compare(sim.run(cr.fit.params, true))) cr.stageErrorAfter.push_back(sc.metrics.stageError);
   }
   std::stable_sort(d.candidates.begin(), d.candidates.end(), [](const CandidateResult& a, const CandidateResult& b) {

@@ -9,8 +9,12 @@
 //     refitted in full (baseline parameters + the candidate's);
 //  3. explained fraction = (RSS_0 - RSS_c) / RSS_0; significance against the
 //     noise: the drop must pass an F test at 99.9 % (chi^2_p / p quantile,
-//     m large) AND the removed RMS per node must exceed half the point noise
-//     (a statistically certain but physically invisible gain is not a finding).
+//     m large), the removed RMS per node must exceed the point noise sigma
+//     (a statistically certain but physically invisible gain is not a
+//     finding: node residuals along a smoothed curve are strongly correlated,
+//     so the F test alone overstates certainty), AND the candidate must
+//     explain at least 25 % of the residual (trimming a residual that comes
+//     from elsewhere, e.g. two rod models' differences, is not a finding).
 // The fingerprint describes r0 so a user can reason about an effect not in
 // the list: its split along gravity / along the coil / across, where along
 // the arc length it concentrates, how it grows with the deployed length.

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "validation/effects.h"
+
 namespace coilsim::validation {
 namespace {
 
@@ -67,6 +69,14 @@ void setParam(ModelParams& p, const std::string& name, double v) {
     if (!e) throw std::invalid_argument("unknown parameter " + name);
     const_cast<EffectUse*>(e)->values[k] = v;
   }
+}
+
+EffectUse effectFromFile(const std::string& name, const Measurement& m) {
+  ensureValidationEffects();
+  EffectUse u = EffectRegistry::global().use(name);
+  if (name == "buoyancy") u.set("medium_density_g_cm3", m.mediumDensity);
+  if (name == "drag") u.set("viscosity_pa_s", m.mediumViscosity);
+  return u;
 }
 
 std::vector<std::string> splitList(const std::string& list) {

@@ -26,6 +26,12 @@ std::optional<FitParam> describeParam(const std::string& name, const ModelParams
 double getParam(const ModelParams& p, const std::string& name);
 void setParam(ModelParams& p, const std::string& name, double si);
 
+// The effect `name` switched on with the values the measurement implies
+// (buoyancy: the medium's density; drag: its viscosity), otherwise its
+// defaults. Throws std::invalid_argument naming an unknown effect and
+// listing the known ones.
+EffectUse effectFromFile(const std::string& name, const Measurement& m);
+
 // "a,b,c" -> {"a", "b", "c"} (empty items dropped).
 std::vector<std::string> splitList(const std::string& list);
 

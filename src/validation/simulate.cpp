@@ -55,6 +55,24 @@ StaticOptions staticOptions() {
   return o;
 }
 
+// Static equilibrium with the effects' per-step preparation (contact
+// detection for self_contact) done first, as a time step does it; with
+// contacts the detection is repeated once at the new equilibrium, since the
+// pairs in touch may have changed.
+StaticReport solveWithEffects(const Built& b, State& s) {
+  bool detects = false;
+  for (const EffectUse& u : b.model.effects)
+    if (u.enabled && u.name() == "self_contact") detects = true;
+  StaticReport r;
+  for (int pass = 0; pass < (detects ? 2 : 1); ++pass) {
+    for (const EffectUse& u : b.model.effects)
+      if (u.enabled) u.effect->beginStep(b.model, u.values, s);
+    r = solveStatic(b.model, s, staticOptions());
+    if (!r.converged) break;
+  }
+  return r;
+}
+
 // Pushes from the state's current deployed length to `target` in increments
 // of at most `step`, an equilibrium after each; halves the increment on failure.
 std::string pushStatic(const Built& b, State& s, DeploymentState& ds, double target, double twist, double step) {
@@ -64,7 +82,7 @@ std::string pushStatic(const Built& b, State& s, DeploymentState& ds, double tar
     const State saved = s;
     const DeploymentState savedDs = ds;
     setDeployment(b.dep, b.model, s, ds, next, twist);
-    const StaticReport r = solveStatic(b.model, s, staticOptions());
+    const StaticReport r = solveWithEffects(b, s);
     if (r.converged) {
       inc = std::min(step, inc * 2);
       continue;
@@ -176,7 +194,7 @@ std::vector<StageSim> StageSimulator::run(const ModelParams& p, bool warmStart) 
       if (int(c.x.size()) == chain.activeNodes) {
         std::copy(c.x.begin(), c.x.end(), chain.x.begin());
         std::copy(c.q.begin(), c.q.end(), chain.q.begin());
-        const StaticReport r = solveStatic(b.model, w, staticOptions());
+        const StaticReport r = solveWithEffects(b, w);
         if (r.converged) {
           out[i] = collect(b, w, wd);
           c.x.assign(chain.x.begin(), chain.x.begin() + chain.activeNodes);

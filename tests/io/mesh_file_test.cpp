@@ -49,15 +49,16 @@ std::string cubePly(bool flipFace, int faces = 12) {
 struct PatientMesh {
   const char* file;
   size_t triangles;
-  double volumeMm3;  // from ../shared/data/meshes/*/SOURCE.txt (VTK)
+  double volumeMm3;    // from ../shared/data/meshes/*/SOURCE.txt (VTK)
+  Vec3 lower, upper;   // bounding box, mm, from the same (2 decimals)
 };
 
 TEST(MeshFile, PatientMeshesLoadClosedAndOrientedWithTheDocumentedCounts) {
   const PatientMesh meshes[] = {
-      {"sofa_aneurysm3D_1/aneurysm3D_1.off", 14186, 1378.8},
-      {"sofa_aneurysm3D_1/aneurysm3D_1.stl", 14186, 1378.8},
-      {"dolfin_aneurysm/aneurysm_closed.stl", 3226, 778.4},
-      {"dolfin_aneurysm/aneurysm_grouped.obj", 3226, 778.4},
+      {"sofa_aneurysm3D_1/aneurysm3D_1.off", 14186, 1378.8, Vec3(-21.76, -17.30, -15.56), Vec3(11.44, 5.31, 7.40)},
+      {"sofa_aneurysm3D_1/aneurysm3D_1.stl", 14186, 1378.8, Vec3(-21.76, -17.30, -15.56), Vec3(11.44, 5.31, 7.40)},
+      {"dolfin_aneurysm/aneurysm_closed.stl", 3226, 778.4, Vec3(38.65, 35.62, 3.74), Vec3(60.00, 54.72, 49.62)},
+      {"dolfin_aneurysm/aneurysm_grouped.obj", 3226, 778.4, Vec3(38.65, 35.62, 3.74), Vec3(60.00, 54.72, 49.62)},
   };
   int found = 0;
   for (const PatientMesh& m : meshes) {
@@ -69,10 +70,15 @@ TEST(MeshFile, PatientMeshesLoadClosedAndOrientedWithTheDocumentedCounts) {
     EXPECT_TRUE(in.report.closed()) << describeInspection(in);
     EXPECT_TRUE(in.report.oriented()) << describeInspection(in);
     EXPECT_EQ(in.report.components, 1u) << m.file;
+    EXPECT_LT((in.report.lower - m.lower).cwiseAbs().maxCoeff(), 0.006) << m.file << ": lower bound";
+    EXPECT_LT((in.report.upper - m.upper).cwiseAbs().maxCoeff(), 0.006) << m.file << ": upper bound";
     EXPECT_NEAR(in.report.volume, m.volumeMm3, 0.05 + 1e-4 * m.volumeMm3) << m.file;  // README gives 0.1 mm^3
     EXPECT_TRUE(in.repaired.usable) << in.repaired.reason;
-    std::printf("[ measured ] %s: %zu triangles, %.2f mm^3, %d parts\n", m.file, in.report.triangles,
-                in.report.volume, in.parts);
+    std::printf("[ measured ] %s: %zu triangles, %.2f mm^3, %d parts, bounds [%.3f, %.3f] x [%.3f, %.3f] x [%.3f, %.3f] mm, "
+                "closed %d, oriented %d, %zu repairs\n",
+                m.file, in.report.triangles, in.report.volume, in.parts, in.report.lower.x(), in.report.upper.x(),
+                in.report.lower.y(), in.report.upper.y(), in.report.lower.z(), in.report.upper.z(), in.report.closed(),
+                in.report.oriented(), in.repaired.actions.size());
     // Loaded for the core: metres.
     const TriangleMesh si = loadMeshFile(path.string());
     EXPECT_NEAR(geometry::enclosedVolume(si), m.volumeMm3 * 1e-9, 1e-4 * m.volumeMm3 * 1e-9);

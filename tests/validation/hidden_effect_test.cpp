@@ -1,27 +1,43 @@
 // The workbench on data with one hidden effect, made by coilsim's own model
-// (a finer discretisation than the workbench fits with), a nominal E 25 %
-// off, uneven sampling and 0.1 mm noise. Reference: the generator's truth.
+// at a finer discretisation (1 mm beams) than the workbench fits with
+// (2 mm), a nominal E 25 % off the truth, uneven sampling (0.5-1.5 mm gaps)
+// and 0.05 mm noise. Reference: the generator's truth. The coil is short
+// (80 mm, 40 beams in the fit: coarse, so that a whole diagnosis takes a
+// few seconds) and thin (wire radius 0.1 mm), so that gravity shapes it.
+//
+// Each test checks the three points: (1) the base model's error,
+// with E fitted, is clearly above the noise floor (and above that of the
+// control data with no hidden effect), (2) diagnose ranks the hidden effect
+// first and calls it significant, (3) with it added and fitted, every stage
+// error is within 1.5x the control's, and the effect's magnitude is
+// recovered within its stated uncertainty (kSigmas standard deviations).
 #include <gtest/gtest.h>
 
-#include <map>
+#include <cstdio>
+#include <functional>
 
 #include "validation/diagnose.h"
+#include "validation/effects.h"
 #include "validation/generate.h"
 
 namespace coilsim::validation {
 namespace {
 
-constexpr double kTrueE = 5.6e9, kNominalE = 7.0e9, kSigma = 0.1e-3;
+constexpr double kTrueE = 5.6e9, kNominalE = 7.0e9, kSigma = 0.05e-3, kWire = 0.1e-3;
+// The Jacobian's sigma comes from a residual whose nodes are correlated
+// along the curve and which includes the fine/coarse discretisation bias:
+// three of them.
+constexpr double kSigmas = 3.0;
 
-Measurement skeleton() {
+Measurement skeleton(double pitch = 5e-3) {
   Measurement m;
   m.name = "synthetic";
   m.coil.length = 0.080;
-  m.coil.wireRadius = 0.15e-3;
-  m.coil.massPerLength = 21450 * M_PI * 0.15e-3 * 0.15e-3;
+  m.coil.wireRadius = kWire;
+  m.coil.massPerLength = 21450 * M_PI * kWire * kWire;
   m.coil.rest.type = RestShapeDef::Type::Helix;
   m.coil.rest.loopDiameter = 8e-3;
-  m.coil.rest.pitch = 5e-3;
+  m.coil.rest.pitch = pitch;
   m.coil.youngModulus = kNominalE;
   m.coil.hasYoungModulus = true;
   m.coil.poissonRatio = 0.39;
@@ -37,7 +53,17 @@ Measurement skeleton() {
   return m;
 }
 
-ModelParams truth(const Measurement& m) {
+// A fast push captured while the coil still swings: inertia matters.
+void addDynamicStage(Measurement& m, double length, double pushTime, double captureTime) {
+  Stage st;
+  st.name = "push";
+  st.deployed = length;
+  st.pushHistory = {{0.0, 0.0, 0.0}, {pushTime, length, 0.0}};
+  st.captureTime = captureTime;
+  m.stages.push_back(st);
+}
+
+ModelParams truthOf(const Measurement& m) {
   ModelParams p = ModelParams::nominal(m);
   p.youngModulus = kTrueE;
   return p;
@@ -45,26 +71,27 @@ ModelParams truth(const Measurement& m) {
 
 SimOptions coarse() { return {2e-3, 2e-3, 1e-3}; }
 
-struct Outcome {
-  Diagnosis d;
-  std::vector<double> baseError;
-};
-
-Outcome run(const Measurement& m) {
-  StageSimulator sim(m, coarse());
-  Comparison cmp(m);
-  Outcome o;
-  o.d = diagnose(sim, cmp, ModelParams::nominal(m), {});
-  for (const auto& s : o.d.baselineStages) o.baseError.push_back(s.metrics.stageError);
+// The two best screened candidates refitted (the default is three): the
+// screening already ranks the hidden effect first by far in these data.
+DiagnoseOptions fast() {
+  DiagnoseOptions o;
+  o.refitTop = 2;
   return o;
 }
 
-void print(const std::string& what, const Outcome& o) {
-  std::printf("%s: E %.3f +- %.3f GPa; base errors", what.c_str(), o.d.baseline.fitted[0].value / 1e9,
-              o.d.baseline.fitted[0].sigma / 1e9);
-  for (double e : o.baseError) std::printf(" %.4f", e);
-  std::printf("\n  %s\n  %s\n", o.d.fingerprint.summary.c_str(), o.d.verdict.c_str());
-  for (const auto& c : o.d.candidates) {
+Measurement generate(const Measurement& sk, const ModelParams& truth, std::uint32_t seed = 1) {
+  GenerateOptions g;
+  g.sigma = kSigma;
+  g.seed = seed;
+  return generateMeasurement(sk, truth, g);
+}
+
+void print(const std::string& what, const Diagnosis& d) {
+  std::printf("%s: E %.4g +- %.3g GPa; base stage errors", what.c_str(), d.baseline.fitted[0].value / 1e9,
+              d.baseline.fitted[0].sigma / 1e9);
+  for (const auto& s : d.baselineStages) std::printf(" %.4f", s.metrics.stageError);
+  std::printf("\n  %s\n  %s\n", d.fingerprint.summary.c_str(), d.verdict.c_str());
+  for (const auto& c : d.candidates) {
     std::printf("  %-20s screen %.3f explained %.3f sig %d refit %d %s |", c.effect.c_str(), c.screenedFraction,
                 c.explainedFraction, c.significant, c.refitted, c.note.c_str());
     for (const auto& f : c.fit.fitted) std::printf(" %s=%.4g+-%.3g", f.name.c_str(), f.value / f.toSI, f.sigma / f.toSI);
@@ -73,41 +100,143 @@ void print(const std::string& what, const Outcome& o) {
   }
 }
 
-TEST(HiddenEffect, Explore) {
+// Stage errors of the control data (same skeleton, no hidden effect) with E fitted.
+std::vector<double> controlErrors(const Measurement& sk) {
+  const Measurement m = generate(sk, truthOf(sk), 2);
+  StageSimulator sim(m, coarse());
+  Comparison cmp(m);
+  FitOptions fo;
+  fo.params = {"young_modulus"};
+  const FitResult f = identify(sim, cmp, ModelParams::nominal(m), fo);
+  EXPECT_TRUE(f.ok) << f.message;
+  std::vector<double> e;
+  for (const auto& s : cmp.compare(sim.run(f.params, true))) e.push_back(s.metrics.stageError);
+  return e;
+}
+
+struct Hidden {
+  std::string effect;
+  std::function<void(EffectUse&)> set;          // the truth's values
+  std::vector<std::pair<std::string, double>> magnitude;  // fitted name -> truth (SI)
+};
+
+void checkHidden(const Measurement& sk, const Hidden& h) {
+  ensureValidationEffects();
+  ModelParams truth = truthOf(sk);
+  truth.effects.push_back(EffectRegistry::global().use(h.effect));
+  h.set(truth.effects.back());
+  const Measurement m = generate(sk, truth);
+  StageSimulator sim(m, coarse());
+  Comparison cmp(m);
+  const Diagnosis d = diagnose(sim, cmp, ModelParams::nominal(m), fast());
+  ASSERT_TRUE(d.ok) << d.message;
+  print(h.effect, d);
+  const std::vector<double> control = controlErrors(sk);
+  // (1) Above the noise floor, and clearly above the control.
+  EXPECT_TRUE(d.fingerprint.aboveNoise) << d.fingerprint.summary;
+  double worst = 0;
+  for (size_t k = 0; k < control.size(); ++k) worst = std::max(worst, d.baselineStages[k].metrics.stageError / control[k]);
+  EXPECT_GT(worst, 2.0) << "the hidden " << h.effect << " should leave a base-model error well above the control's";
+  // (2) Ranked first, significant.
+  ASSERT_FALSE(d.candidates.empty());
+  const CandidateResult& top = d.candidates.front();
+  EXPECT_EQ(top.effect, h.effect) << d.verdict;
+  EXPECT_TRUE(top.significant);
+  // (3) With it: the control's error level, and the magnitude.
+  const CandidateResult* c = nullptr;
+  for (const auto& x : d.candidates)
+    if (x.effect == h.effect) c = &x;
+  ASSERT_TRUE(c && c->refitted) << h.effect << " was not refitted";
+  ASSERT_EQ(c->stageErrorAfter.size(), control.size());
+  for (size_t k = 0; k < control.size(); ++k)
+    EXPECT_LE(c->stageErrorAfter[k], 1.5 * control[k]) << "stage " << k << ": control error " << control[k];
+  for (const auto& [name, value] : h.magnitude) {
+    bool found = false;
+    for (const FittedValue& f : c->fit.fitted)
+      if (f.name == name) {
+        found = true;
+        EXPECT_LE(std::abs(f.value - value), kSigmas * f.sigma)
+            << name << " fitted " << f.value / f.toSI << " +- " << f.sigma / f.toSI << ", truth " << value / f.toSI;
+      }
+    EXPECT_TRUE(found) << name << " not fitted";
+  }
+}
+
+TEST(HiddenEffect, ControlHasNoSignificantEffect) {
   const Measurement sk = skeleton();
-  GenerateOptions g;
-  g.sigma = kSigma;
-  {
-    const Measurement m = generateMeasurement(sk, truth(sk), g);
-    print("control", run(m));
-  }
-  {
-    ModelParams t = truth(sk);
-    t.effects.push_back(EffectRegistry::global().use("gravity_tilt"));
-    t.effects.back().set("tilt_a_deg", 12 * M_PI / 180);
-    t.effects.back().set("tilt_b_deg", -8 * M_PI / 180);
-    print("gravity_tilt", run(generateMeasurement(sk, t, g)));
-  }
-  {
-    ModelParams t = truth(sk);
-    t.effects.push_back(EffectRegistry::global().use("catheter_compliance"));
-    t.effects.back().set("bending_stiffness_n_mm2", 1e-6);
-    print("catheter_compliance", run(generateMeasurement(sk, t, g)));
-  }
-  {
-    Measurement d = sk;
-    d.mediumDensity = 1000, d.mediumViscosity = 1.0;
-    Stage st;
-    st.name = "push";
-    st.deployed = 0.05;
-    st.pushHistory = {{0.0, 0.0, 0.0}, {1.0, 0.05, 0.0}};
-    st.captureTime = 1.0;
-    d.stages.push_back(st);
-    ModelParams t = truth(d);
-    t.effects.push_back(EffectRegistry::global().use("drag"));
-    t.effects.back().set("viscosity_pa_s", 1.0);
-    print("drag", run(generateMeasurement(d, t, g)));
-  }
+  const Measurement m = generate(sk, truthOf(sk));
+  StageSimulator sim(m, coarse());
+  Comparison cmp(m);
+  const Diagnosis d = diagnose(sim, cmp, ModelParams::nominal(m), fast());
+  ASSERT_TRUE(d.ok) << d.message;
+  print("control", d);
+  for (const auto& c : d.candidates) EXPECT_FALSE(c.significant) << c.effect << ": " << d.verdict;
+  // E recovered from a nominal 25 % off, within 2.5 %: the data come from
+  // 1 mm beams, the fit uses 2 mm beams, which biases E by about 2 %.
+  EXPECT_NEAR(d.baseline.fitted[0].value, kTrueE, std::max(kSigmas * d.baseline.fitted[0].sigma, 0.025 * kTrueE));
+}
+
+TEST(HiddenEffect, GravityTilt) {
+  checkHidden(skeleton(), {"gravity_tilt",
+                           [](EffectUse& e) {
+                             e.set("tilt_a_deg", 15 * M_PI / 180);
+                             e.set("tilt_b_deg", -10 * M_PI / 180);
+                           },
+                           {{"gravity_tilt.tilt_a_deg", 15 * M_PI / 180}, {"gravity_tilt.tilt_b_deg", -10 * M_PI / 180}}});
+}
+
+TEST(HiddenEffect, CatheterCompliance) {
+  checkHidden(skeleton(), {"catheter_compliance", [](EffectUse& e) { e.set("bending_stiffness_n_mm2", 0.5e-6); },
+                           {{"catheter_compliance.bending_stiffness_n_mm2", 0.5e-6}}});
+}
+
+// Buoyancy is not in this list of hidden effects the workbench finds: under
+// gravity alone it scales the weight, (rho_c - rho_f) A g, exactly as a
+// stiffer coil would, so the base fit absorbs it into E; a fast push
+// captured mid-swing (inertia rho_c A) did not separate the two here. The
+// test checks that degeneracy against its closed form instead: the base fit
+// returns E rho_c / (rho_c - rho_f), and diagnose calls buoyancy
+// indistinguishable, not significant.
+TEST(HiddenEffect, BuoyancyIsAbsorbedByE) {
+  ensureValidationEffects();
+  Measurement sk = skeleton();
+  const double rhoC = 6450, rhoF = 1000;  // a nitinol coil in water: buoyancy 15 % of the weight
+  sk.mediumDensity = rhoF;
+  sk.coil.massPerLength = rhoC * M_PI * kWire * kWire;
+  ModelParams truth = truthOf(sk);
+  truth.effects.push_back(EffectRegistry::global().use("buoyancy"));
+  truth.effects.back().set("medium_density_g_cm3", rhoF);
+  const Measurement m = generate(sk, truth);
+  StageSimulator sim(m, coarse());
+  Comparison cmp(m);
+  DiagnoseOptions o;
+  o.candidates = {candidateFor("buoyancy", m), candidateFor("gravity_tilt", m)};
+  o.refitTop = 1;
+  const Diagnosis d = diagnose(sim, cmp, ModelParams::nominal(m), o);
+  ASSERT_TRUE(d.ok) << d.message;
+  print("buoyancy", d);
+  // The same data without buoyancy give E_c (with the fit's discretisation
+  // bias); with it, the weight is (rho_c - rho_f) / rho_c of the model's.
+  const Measurement c = generate(sk, truthOf(sk));
+  StageSimulator csim(c, coarse());
+  Comparison ccmp(c);
+  FitOptions fe;
+  fe.params = {"young_modulus"};
+  const FitResult cf = identify(csim, ccmp, ModelParams::nominal(c), fe);
+  ASSERT_TRUE(cf.ok) << cf.message;
+  const FittedValue &eb = d.baseline.fitted[0], &ec = cf.fitted[0];
+  EXPECT_NEAR(eb.value, ec.value * rhoC / (rhoC - rhoF), kSigmas * std::hypot(eb.sigma, ec.sigma))
+      << "E with buoyancy hidden " << eb.value << ", without " << ec.value;
+  for (const auto& c : d.candidates) EXPECT_FALSE(c.significant) << c.effect;
+  for (const auto& c : d.candidates)
+    if (c.effect == "buoyancy") EXPECT_NE(c.note.find("indistinguishable"), std::string::npos) << c.note;
+}
+
+TEST(HiddenEffect, Drag) {
+  Measurement sk = skeleton();
+  sk.mediumViscosity = 1.0;
+  addDynamicStage(sk, 0.04, 0.2, 0.2);
+  checkHidden(sk, {"drag", [](EffectUse& e) { e.set("viscosity_pa_s", 1.0); }, {{"drag.viscosity_pa_s", 1.0}}});
 }
 
 }  // namespace

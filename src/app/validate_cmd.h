@@ -1,0 +1,54 @@
+#pragma once
+// `coilsim validate` and the pieces `coilsim diagnose` shares with it
+// (docs/validation.md): reading the measurement and the options, the
+// per-stage JSON and Markdown tables, the pictures.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "validation/diagnose.h"
+
+namespace coilsim::app {
+
+// coilsim validate FILE [--effects a,b] [--fit young_modulus,...] --out DIR
+//   [--spacing MM] [--push-increment MM] [--no-plots] [--quiet]
+// Writes DIR/report.json, DIR/report.md and the PNGs. Returns 0, 1 if a
+// stage cannot be simulated, 2 on a bad command line or measurement file.
+int runValidate(const std::vector<std::string>& args);
+
+// Shared with diagnose.
+struct WorkbenchArgs {
+  std::string file, out;
+  std::vector<std::string> effects, fit;
+  double spacingMm = 2.0, pushIncrementMm = 2.0;
+  bool plots = true, quiet = false;
+};
+
+// Parses the options common to validate and diagnose (effects only when
+// `allowEffects`); returns an error message or "".
+std::string parseWorkbenchArgs(const std::vector<std::string>& args, bool allowEffects, WorkbenchArgs& a);
+
+// One JSON object per stage: name, node_error_mean, node_error_sd,
+// stage_error, mean_displacement_mm, mean_distance_mm, and where the
+// residual lies (components, thirds of the arc length, noise floor).
+nlohmann::ordered_json stagesJson(const validation::Comparison& cmp, const std::vector<validation::StageComparison>& s);
+// name -> {value, sigma, unit} in edge units.
+nlohmann::ordered_json fittedJson(const std::vector<validation::FittedValue>& fitted);
+nlohmann::ordered_json fingerprintJson(const validation::Fingerprint& f);
+
+// The per-stage Markdown table, before and (when `after` is not empty) after.
+std::string stageTable(const validation::Measurement& m, const std::vector<validation::StageComparison>& before,
+                       const std::vector<validation::StageComparison>& after);
+
+// error_along_arc.png and overlay_stageN.png into `dir`; the names of the
+// files written are appended to `written`, problems to `warnings`.
+void writePlots(const std::string& dir, const validation::Measurement& m,
+                const std::vector<validation::StageComparison>& stages, std::vector<std::string>& written,
+                std::vector<std::string>& warnings);
+
+// Expands "EFFECT" items of --fit into that effect's fitted parameters
+// (the diagnose candidate's: buoyancy.medium_density_g_cm3, both tilts...).
+std::vector<std::string> expandFitNames(const std::vector<std::string>& names, const validation::Measurement& m);
+
+}  // namespace coilsim::app
