@@ -9,6 +9,7 @@
 #include <cmath>
 #include <random>
 
+#include "physics/contact/detect.h"
 #include "physics/contact/geometry.h"
 #include "physics/contact/obstacle_tree.h"
 #include "physics/contact/report.h"
@@ -134,9 +135,11 @@ TEST(WallContactTest, RestingRodIsCarriedByItsWeightWithThePenaltyPenetration) {
   for (int i = 0; i < rod.activeNodes; ++i) weight += rod.nodes[i].mass * 9.81;
   const ContactSummary s = summarizeContacts(r.state);
   EXPECT_NEAR(s.totalWallForce, weight, 1e-3 * weight);
-  // Uniform line load w = weight / L on a penalty k per length: pen = w / k.
+  // Uniform line load w = weight / L on a penalty k per length: pen = w / k,
+  // measured from the contact surface, kWallSkin r outside the wire.
   const double expected = weight / 0.01 / (k * 1e6);
-  for (int i = 0; i < rod.activeNodes; ++i) EXPECT_NEAR(0.15e-3 - rod.x[i].z(), expected, 0.02 * expected) << "node " << i;
+  const double surface = (1 + kWallSkin) * 0.15e-3;
+  for (int i = 0; i < rod.activeNodes; ++i) EXPECT_NEAR(surface - rod.x[i].z(), expected, 0.02 * expected) << "node " << i;
   for (int i = 0; i < rod.activeNodes; ++i) EXPECT_LT(rod.v[i].norm(), 1e-6);
 }
 
@@ -167,9 +170,6 @@ std::unique_ptr<Cavity> cavityDeployment(double coilLength, int beams, bool wall
   def.timeStep = 1e-3;
   def.effects.push_back(EffectRegistry::global().use("wall_contact"));
   def.effects.back().enabled = wall;
-  if (getenv("H3MU")) { def.effects.back().set("friction_static", atof(getenv("H3MU"))); def.effects.back().set("friction_dynamic", atof(getenv("H3MU"))); }
-  if (getenv("H3K")) def.effects.back().set("stiffness_n_mm2", atof(getenv("H3K"))*1e6);
-  if (getenv("H3Z")) def.effects.back().set("damping_ratio", atof(getenv("H3Z")));
   def.effects.push_back(EffectRegistry::global().use("self_contact"));
   def.effects.back().enabled = self;
   def.obstacles.push_back(obstacleOf(c->mesh));
@@ -191,45 +191,48 @@ std::unique_ptr<Cavity> cavityDeployment(double coilLength, int beams, bool wall
 }
 
 // Deepest penetration of any capsule (nodes and segment midpoints) into the
-// convex cavity's wall, from the face planes.
-double deepestPenetration(const Cavity& c) {
+// convex cavity's wall, from its face planes (test::ConvexCavity).
+double deepestPenetration(const Cavity& c, const test::ConvexCavity& planes) {
   double deepest = 0;
   for (const RodState& r : c.state.rods) {
     if (!r.active) continue;
     for (int i = 0; i < r.activeNodes; ++i) {
       const double radius = r.nodes[i].radius;
-      deepest = std::max(deepest, radius - convexClearance(c.mesh, r.x[i]));
-      if (i + 1 < r.activeNodes) deepest = std::max(deepest, radius - convexClearance(c.mesh, 0.5 * (r.x[i] + r.x[i + 1])));
+      deepest = std::max(deepest, radius - planes.clearance(r.x[i], radius));
+      if (i + 1 < r.activeNodes) deepest = std::max(deepest, radius - planes.clearance(0.5 * (r.x[i] + r.x[i + 1]), radius));
     }
   }
   return deepest;
 }
 
+// The root causes this test found (physics/contact/response.h): sliding
+// friction explicit along the slip (a loop snapping at 1.6 m/s), contacts
+// outside the step's linearisation (tunnelling at 0.6 m/s), a node sliding
+// off the nearest face's plane, and jolts from node insertion at the tip.
 TEST(WallContactTest, CoilPushedAt10MmPerSecondStaysInsideA7MmCavity) {
   const double length = 0.04;
-  auto c = cavityDeployment(length, 80, true, !getenv("H3NOSELF"));
+  auto c = cavityDeployment(length, 80, true, true);
+  const test::ConvexCavity planes(c->mesh);
   ASSERT_EQ(c->ctl.command(c->dep, c->ds, {DeviceCommand::Kind::Push, 0.01, length}), "");
-  double deepest = 0, maxForce = 0;
+  double deepest = 0, maxForce = 0, fastest = 0;
   const double dt = c->model.timeStep;
   const int steps = int(length / 0.01 / dt) + 300;
   for (int i = 0; i < steps; ++i) {
     c->ctl.advance(c->dep, c->model, c->state, c->ds, dt);
     ASSERT_TRUE(step(c->model, c->state).ok()) << "step " << i << ": " << c->state.warnings.back();
-    deepest = std::max(deepest, deepestPenetration(*c));
-    if (getenv("H3DBG") && i % 20 == 0) { auto q = summarizeContacts(c->state); std::printf("%d pen %.2f um wall %d self %d maxF %.4f\n", i, deepestPenetration(*c)*1e6, q.wallContacts, q.selfContacts, q.maxWallForce); }
-    if (getenv("H3DBG2") && i >= atoi(getenv("H3DBG2")) && i < atoi(getenv("H3DBG2")) + 15) {
-      const RodState& r = c->state.rods[c->dep.chainRod];
-      std::printf("step %d active %d\n", i, r.activeNodes);
-      for (const auto& p : r.contact.wall) std::printf("  seg %d s %.3f gap %.2f um n %.3f %.3f %.3f F %.4f slip %.3g um %s |v| %.4f\n", p.segment, p.s, p.gap*1e6, p.normal.x(), p.normal.y(), p.normal.z(), p.normalForce, p.slip.norm()*1e6, p.sliding ? "slide" : "stick", r.v[p.segment+1].norm());
-    }
+    deepest = std::max(deepest, deepestPenetration(*c, planes));
     maxForce = std::max(maxForce, summarizeContacts(c->state).maxWallForce);
+    for (const RodState& r : c->state.rods)
+      for (int k = 0; k < r.activeNodes && r.active; ++k) fastest = std::max(fastest, r.v[k].norm());
   }
   EXPECT_DOUBLE_EQ(c->ds.deployed, length);
   const double radius = 0.15e-3;
-  std::printf("[ measured ] deepest wall penetration %.3f um (%.1f %% of the wire radius), max node wall force %.4f N\n",
-              deepest * 1e6, 100 * deepest / radius, maxForce);
+  std::printf("[ measured ] deepest wall penetration %.3f um (%.1f %% of the wire radius), max node wall force %.4f N, "
+              "fastest node %.3f m/s\n", deepest * 1e6, 100 * deepest / radius, maxForce, fastest);
   EXPECT_LT(deepest, 0.1 * radius);
   EXPECT_GT(maxForce, 0) << "the coil never touched the wall: the test would prove nothing";
+  // No snapping: a coil pushed at 10 mm/s has no business moving at 1 m/s.
+  EXPECT_LT(fastest, 0.5);
 }
 
 TEST(WallContactTest, SwitchedOffTheCoilLeavesTheCavity) {
@@ -241,7 +244,7 @@ TEST(WallContactTest, SwitchedOffTheCoilLeavesTheCavity) {
     c->ctl.advance(c->dep, c->model, c->state, c->ds, dt);
     ASSERT_TRUE(step(c->model, c->state).ok());
   }
-  EXPECT_GT(deepestPenetration(*c), 1e-3);
+  EXPECT_GT(deepestPenetration(*c, test::ConvexCavity(c->mesh)), 1e-3);
 }
 
 }  // namespace

@@ -109,4 +109,37 @@ inline double convexClearance(const TriangleMesh& m, const Vec3& p) {
   return d;
 }
 
+// The same clearance for many points: the face planes as one matrix, and a
+// shortcut for points deep inside (the clearance is at least the inscribed
+// radius about `centre` minus the distance from it), which are the most.
+class ConvexCavity {
+ public:
+  explicit ConvexCavity(const TriangleMesh& m, const Vec3& centre = Vec3::Zero()) : centre_(centre) {
+    normals_.resize(Eigen::Index(m.triangles.size()), 3);
+    offsets_.resize(Eigen::Index(m.triangles.size()));
+    for (size_t t = 0; t < m.triangles.size(); ++t) {
+      const Vec3 a = m.vertices[m.triangles[t][0]];
+      const Vec3 n = (m.vertices[m.triangles[t][1]] - a).cross(m.vertices[m.triangles[t][2]] - a).normalized();
+      normals_.row(Eigen::Index(t)) = n.transpose();
+      offsets_[Eigen::Index(t)] = n.dot(a - centre);
+    }
+    inscribed_ = offsets_.minCoeff();
+  }
+  // Exact clearance of p (negative outside) when it is below `atLeast`;
+  // otherwise any value >= atLeast.
+  double clearance(const Vec3& p, double atLeast) const {
+    const Vec3 q = p - centre_;
+    const double bound = inscribed_ - q.norm();
+    if (bound >= atLeast) return bound;
+    return (offsets_ - normals_ * q).minCoeff();
+  }
+  double inscribedRadius() const { return inscribed_; }
+
+ private:
+  Vec3 centre_;
+  Eigen::Matrix<double, Eigen::Dynamic, 3> normals_;  // (ntriangle x 3)
+  Eigen::VectorXd offsets_;                          // (ntriangle)
+  double inscribed_ = 0;
+};
+
 }  // namespace coilsim::test

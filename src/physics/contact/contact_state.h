@@ -24,6 +24,12 @@ struct ContactPoint {
   double gap = 0;             // clearance at detection, m (< 0: penetration)
   Vec3 otherVelocity = Vec3::Zero();  // velocity of the other surface point at detection
   double normalForce = 0;     // penalty normal force at detection, N
+  // Whether the start-of-step relative velocity carries the contact into
+  // touch before the step ends (line contacts: per node a, b; point
+  // contacts: closing[0]). Such a contact is active in this step's implicit
+  // solve even though it does not touch yet (speculative contact; see
+  // response.h).
+  bool closing[2] = {false, false};
   // Friction memory: elastic tangential displacement of the regularised
   // Coulomb spring (the stick point is contact point - slip) and whether the
   // contact slides (dynamic coefficient) or sticks (static).

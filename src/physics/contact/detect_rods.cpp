@@ -40,12 +40,16 @@ void detectRodContacts(const Model& model, State& state, bool sameRod, double ma
 
   // Cells at least as large as the reach of any two capsules, so every pair
   // that can touch lies in neighbouring cells.
+  // The reach includes what a segment sweeps in the step at its start
+  // velocity, so a pair that would meet within the step is found (response.h).
+  const double h = model.timeStep;
   double reach = 0;
   for (size_t k = 0; k < state.rods.size(); ++k) {
     const RodState& r = state.rods[k];
     if (!takesPart(r)) continue;
     for (int e = 0; e + 1 < r.activeNodes; ++e)
-      reach = std::max(reach, 0.5 * (r.x[e + 1] - r.x[e]).norm() + std::max(r.nodes[e].radius, r.nodes[e + 1].radius));
+      reach = std::max(reach, 0.5 * (r.x[e + 1] - r.x[e]).norm() + std::max(r.nodes[e].radius, r.nodes[e + 1].radius) +
+                                  h * std::max(r.v[e].norm(), r.v[e + 1].norm()));
   }
   const double cell = 2 * reach + margin;
   const bool usable = cell > 0 && std::isfinite(cell);  // else no rod takes part (or positions are not finite)
@@ -89,21 +93,28 @@ void detectRodContacts(const Model& model, State& state, bool sameRod, double ma
               continue;
             const SegmentPair p = closestSegmentSegment(a0, a1, b0, b1);
             const double gap = p.distance - ra - rb;
-            if (gap > margin || p.distance <= 1e-12 * ra) continue;
+            if (p.distance <= 1e-12 * ra) continue;
+            // Closing speed of the pair along the line of centres, at the start of the step.
+            const Vec3 normal = (p.p - p.q) / p.distance;
+            const Vec3 va = (1 - p.s) * ri.v[gi.segment] + p.s * ri.v[gi.segment + 1];
+            const Vec3 vb = (1 - p.t) * rj.v[gj.segment] + p.t * rj.v[gj.segment + 1];
+            const bool closing = -gap - h * normal.dot(va - vb) > 0;
+            if (gap > margin && !closing) continue;
             ContactPoint c;
             c.segment = gi.segment, c.other = gj.rod, c.otherSegment = gj.segment;
             c.s = p.s;
-            c.normal = (p.p - p.q) / p.distance;
+            c.normal = normal;
             c.anchor = p.q;
             c.radius = ra + rb;
             c.gap = gap;
-            c.otherVelocity = (1 - p.t) * rj.v[gj.segment] + p.t * rj.v[gj.segment + 1];
+            c.otherVelocity = vb;
+            c.closing[0] = closing;
             ContactPoint d = c;
             d.segment = gj.segment, d.other = gi.rod, d.otherSegment = gi.segment;
             d.s = p.t;
             d.normal = -c.normal;
             d.anchor = p.p;
-            d.otherVelocity = (1 - p.s) * ri.v[gi.segment] + p.s * ri.v[gi.segment + 1];
+            d.otherVelocity = va;
             auto& li = sameRod ? state.rods[gi.rod].contact.self : state.rods[gi.rod].contact.rod;
             auto& lj = sameRod ? state.rods[gj.rod].contact.self : state.rods[gj.rod].contact.rod;
             li.push_back(c);
@@ -120,7 +131,7 @@ void detectRodContacts(const Model& model, State& state, bool sameRod, double ma
     for (ContactPoint& c : list) {
       const bool catheter = model.rods[k].role == RodRole::Catheter || model.rods[c.other].role == RodRole::Catheter;
       const ContactLaw& l = catheter ? catheterLaw : law;
-      updateContact(c, findPrevious(previous[k], c, r), r, l, model.timeStep);
+      updateContact(c, findPrevious(previous[k], c, r), r, l, h);
     }
     // Per-node report with the pair law (the catheter law differs only in friction).
     reportContacts(list, r, law, sameRod ? r.contact.selfForce : r.contact.rodForce);

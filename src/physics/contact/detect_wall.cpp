@@ -8,6 +8,7 @@
 namespace coilsim {
 namespace {
 
+
 struct Nearest {
   SegmentTriangle hit;
   int triangle = -1;
@@ -56,6 +57,7 @@ ContactPoint makeContact(const ObstacleTree& tree, const Nearest& n, int segment
 
 void detectWallContacts(const Model& model, State& state, double margin, const ContactLaw& law) {
   static thread_local std::vector<int> stack, candidates;
+  const double h = model.timeStep;
   for (size_t k = 0; k < state.rods.size(); ++k) {
     RodState& r = state.rods[k];
     RodContacts& rc = r.contact;
@@ -64,12 +66,15 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
     if (r.active && model.rods[k].role != RodRole::Catheter) {
       for (int e = 0; e + 1 < r.activeNodes; ++e) {
         const Vec3 &a = r.x[e], &b = r.x[e + 1];
-        const double radius = 0.5 * (r.nodes[e].radius + r.nodes[e + 1].radius);
+        const double radius = (1 + kWallSkin) * 0.5 * (r.nodes[e].radius + r.nodes[e + 1].radius);
+        // What the segment can sweep in this step at its start velocity: a
+        // contact it would reach must be in this step's implicit solve.
+        const double sweep = margin + h * std::max(r.v[e].norm(), r.v[e + 1].norm());
         for (size_t o = 0; o < model.obstacles.size(); ++o) {
           if (!model.obstacles[o].contact || o >= model.obstacleTrees.size()) continue;
           const ObstacleTree& tree = *model.obstacleTrees[o];
-          Nearest n = nearestFeature(tree, a, b, radius + margin, stack, candidates);
-          if (n.triangle < 0 || n.hit.distance > radius + margin) {
+          Nearest n = nearestFeature(tree, a, b, radius + sweep, stack, candidates);
+          if (n.triangle < 0 || n.hit.distance > radius + sweep) {
             // Nothing near: either free, or pushed wholly through the wall
             // since the last step. Only the second needs the wider search.
             ContactPoint probe;
@@ -79,9 +84,38 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
             if (n.triangle < 0) continue;
           }
           ContactPoint c = makeContact(tree, n, e, int(o), radius);
-          if (c.gap > margin) continue;
-          updateContact(c, findPrevious(rc.previous, c, r), r, law, model.timeStep);
+          if (!markClosing(c, r, h) && c.gap > margin) continue;
+          updateContact(c, findPrevious(rc.previous, c, r), r, law, h);
           rc.wall.push_back(c);
+          // Concave neighbours: faces on the free side of the nearest face's
+          // plane (the wall folds towards the lumen) bound the free space too;
+          // their planes keep a node sliding off the nearest face from going
+          // through the next one within the step (detect.h).
+          const TriangleMesh& m = tree.mesh();
+          const Vec3& nA = tree.normal(n.triangle);
+          const Vec3& vA = m.vertices[m.triangles[n.triangle][0]];
+          static thread_local std::vector<int> near;
+          near = candidates;
+          int extra = 0;
+          for (const int t : near) {
+            if (t == n.triangle || extra >= 3) continue;
+            const Vec3& nt = tree.normal(t);
+            if (nt.dot(nA) > 0.99999 || nt.dot(nA) < 0.5) continue;
+            const auto& f = m.triangles[t];
+            const Vec3 centroid = (m.vertices[f[0]] + m.vertices[f[1]] + m.vertices[f[2]]) / 3;
+            if (nA.dot(centroid - vA) >= 0) continue;  // a ridge into the free space: its plane would cut it
+            const SegmentTriangle hit = closestSegmentTriangle(a, b, m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]);
+            if (hit.distance > radius + sweep) continue;
+            ContactPoint q;
+            q.segment = e, q.other = int(o), q.line = true, q.s = 0.5, q.radius = radius;
+            q.normal = -nt;
+            q.anchor = m.vertices[f[0]];
+            q.gap = std::min(q.normal.dot(a - q.anchor), q.normal.dot(b - q.anchor)) - radius;
+            if (!markClosing(q, r, h) && q.gap > margin) continue;
+            updateContact(q, findPrevious(rc.previous, q, r), r, law, h);
+            rc.wall.push_back(q);
+            ++extra;
+          }
         }
       }
     }

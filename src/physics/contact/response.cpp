@@ -22,54 +22,56 @@ double nodeMass(const ContactPoint& c, const RodState& rod, double wa, double wb
   return wa * rod.nodes[c.segment].mass + wb * rod.nodes[c.segment + 1].mass;
 }
 
+// Penetration of node a (end = 0) or b (end = 1) below the line contact's plane.
+double nodePenetration(const ContactPoint& c, const std::vector<Vec3>& x, int end) {
+  return c.radius - c.normal.dot(x[c.segment + end] - c.anchor);
+}
+
 }  // namespace
 
 NormalEval evalNormal(const ContactPoint& c, const RodState& rod, const ContactLaw& law) {
   NormalEval e;
-  const Vec3& xa = rod.x[c.segment];
-  const Vec3& xb = rod.x[c.segment + 1];
   if (!c.line) {
     const double pen = c.radius - c.normal.dot(along(rod.x, c, c.s) - c.anchor);
-    if (pen <= 0) return e;
+    if (pen <= 0 && !c.closing[0]) return e;
     e.touching = true;
-    e.force = law.stiffness * pen;
-    e.stiffness = law.stiffness;
-    e.wa = 1 - c.s, e.wb = c.s;
+    const double f = pen > 0 ? law.stiffness * pen : 0.0;
+    e.fa = (1 - c.s) * f, e.fb = c.s * f;
+    e.ka = (1 - c.s) * law.stiffness, e.kb = c.s * law.stiffness;
     return e;
   }
-  // Line contact: the penetration below the wall's tangent plane is linear
-  // along the segment. The segment acts like the length of rod it spans:
-  // force k L pen_max (a segment lying on the wall carries k per length,
-  // exactly as its two half-nodes would; one hitting the wall end-on is not
-  // softer for touching at a single point), shared between the nodes by the
-  // centroid of the penetrating part (its first moments, exact by 2-point
-  // Gauss on the linear profile).
-  const double pa = c.radius - c.normal.dot(xa - c.anchor), pb = c.radius - c.normal.dot(xb - c.anchor);
-  if (pa <= 0 && pb <= 0) return e;
-  double s0 = 0, s1 = 1;
-  if (pa <= 0) s0 = pa / (pa - pb);
-  if (pb <= 0) s1 = pa / (pa - pb);
-  const double half = 0.5 * (s1 - s0), mid = 0.5 * (s0 + s1);
-  double ma = 0, mb = 0;
-  for (const double g : {-1 / std::sqrt(3.0), 1 / std::sqrt(3.0)}) {
-    const double s = mid + half * g, pen = pa + (pb - pa) * s;
-    ma += (1 - s) * pen, mb += s * pen;
-  }
-  e.touching = true;
-  e.stiffness = law.stiffness * (xb - xa).norm();
-  e.force = e.stiffness * std::max(pa, pb);
-  e.wa = ma + mb > 0 ? ma / (ma + mb) : (pa >= pb ? 1.0 : 0.0);
-  e.wb = 1 - e.wa;
+  // Line contact: each node against the plane with half the segment's length.
+  const double half = 0.5 * law.stiffness * (rod.x[c.segment + 1] - rod.x[c.segment]).norm();
+  const double pa = nodePenetration(c, rod.x, 0), pb = nodePenetration(c, rod.x, 1);
+  if (pa > 0 || c.closing[0]) e.fa = half * std::max(0.0, pa), e.ka = half;
+  if (pb > 0 || c.closing[1]) e.fb = half * std::max(0.0, pb), e.kb = half;
+  e.touching = e.ka > 0 || e.kb > 0;
   return e;
+}
+
+bool markClosing(ContactPoint& c, const RodState& rod, double h) {
+  if (!c.line) {
+    const double pen = c.radius - c.normal.dot(along(rod.x, c, c.s) - c.anchor);
+    c.closing[0] = pen - h * c.normal.dot(relativeVelocity(c, rod, c.s)) > 0;
+    c.closing[1] = false;
+    return pen > 0 || c.closing[0];
+  }
+  bool any = false;
+  for (int end = 0; end < 2; ++end) {
+    const double pen = nodePenetration(c, rod.x, end);
+    c.closing[end] = pen - h * c.normal.dot(rod.v[c.segment + end] - c.otherVelocity) > 0;
+    any = any || pen > 0 || c.closing[end];
+  }
+  return any;
 }
 
 void updateContact(ContactPoint& c, const ContactPoint* previous, const RodState& rod, const ContactLaw& law, double h) {
   const NormalEval n = evalNormal(c, rod, law);
-  c.normalForce = n.force;
-  if (n.touching && c.line) c.s = n.wb;  // the force centroid carries the friction
+  c.normalForce = n.force();
+  if (n.touching && c.line) c.s = n.wb();  // the force centroid carries the friction
   c.at = along(rod.x, c, c.s);
   const double mu = std::max(law.frictionStatic, law.frictionDynamic);
-  if (!n.touching || mu <= 0 || !previous) {
+  if (c.normalForce <= 0 || mu <= 0 || !previous) {
     c.slip.setZero();
     c.sliding = false;
     return;
@@ -77,10 +79,10 @@ void updateContact(ContactPoint& c, const ContactPoint* previous, const RodState
   // The stick spring stretched by last step's tangential motion, in the new tangent plane.
   const Mat3 tangent = Mat3::Identity() - c.normal * c.normal.transpose();
   c.slip = tangent * (previous->slip + h * relativeVelocity(c, rod, c.s));
-  const double kt = law.frictionStiffnessRatio * n.stiffness, trial = kt * c.slip.norm();
-  const double limit = (previous->sliding ? law.frictionDynamic : law.frictionStatic) * n.force;
+  const double kt = law.frictionStiffnessRatio * (n.ka + n.kb), trial = kt * c.slip.norm();
+  const double limit = (previous->sliding ? law.frictionDynamic : law.frictionStatic) * c.normalForce;
   c.sliding = trial > limit;
-  if (c.sliding) c.slip *= law.frictionDynamic * n.force / trial;
+  if (c.sliding) c.slip *= law.frictionDynamic * c.normalForce / trial;
 }
 
 const ContactPoint* findPrevious(std::span<const ContactPoint> list, const ContactPoint& c, const RodState& rod) {
@@ -98,45 +100,79 @@ const ContactPoint* findPrevious(std::span<const ContactPoint> list, const Conta
   return best;
 }
 
-void applyContacts(std::span<const ContactPoint> contacts, const RodState& rod, const ContactLaw& law, RodForces& out) {
+void applyContacts(std::span<const ContactPoint> contacts, const RodState& rod, const ContactLaw& law, double h,
+                   RodForces& out) {
   for (const ContactPoint& c : contacts) {
     const NormalEval n = evalNormal(c, rod, law);
     if (!n.touching) continue;
-    const int a = c.segment, b = c.segment + 1;
-    const Vec3 vrel = relativeVelocity(c, rod, n.wb);
-    const double damping = 2 * law.dampingRatio * std::sqrt(n.stiffness * nodeMass(c, rod, n.wa, n.wb));
-    // Damping may slow a separation but never pulls the rod onto the wall.
-    const double fn = std::max(0.0, n.force - damping * c.normal.dot(vrel));
-    Vec3 f = fn * c.normal;
+    const int node[2] = {c.segment, c.segment + 1};
+    const double fe[2] = {n.fa, n.fb}, ke[2] = {n.ka, n.kb};
     const Mat3 nn = c.normal * c.normal.transpose();
-    Mat3 k = law.implicitScale * n.stiffness * nn, d = law.implicitScale * damping * nn;
-    if (law.frictionStatic > 0 || law.frictionDynamic > 0) {
-      // The stick spring at the current positions (later Newton iterations
-      // see the step's motion), capped by Coulomb's cone.
-      const Mat3 tangent = Mat3::Identity() - nn;
-      const double kt = law.frictionStiffnessRatio * n.stiffness;
-      const Vec3 trial = c.slip + tangent * (along(rod.x, c, c.s) - c.at);
-      const double limit = (c.sliding ? law.frictionDynamic : law.frictionStatic) * n.force, spring = kt * trial.norm();
-      if (spring <= limit * (1 + 1e-9)) {
-        // Sticking: the spring and its damping are implicit.
-        const double dt = 2 * law.dampingRatio * std::sqrt(kt * nodeMass(c, rod, n.wa, n.wb));
-        f -= kt * trial + dt * (tangent * vrel);
-        k += law.implicitScale * kt * tangent;
-        d += law.implicitScale * dt * tangent;
-      } else {
-        // Sliding: a force of constant size; only its direction is stiff.
-        const Vec3 dir = trial / trial.norm();
-        f -= limit * dir;
-        k += law.implicitScale * (limit / trial.norm()) * (tangent - dir * dir.transpose());
-      }
+    // Normal spring and damper per node. Point contacts damp the contact
+    // point's motion with the pair's mass; line contacts each node's own.
+    const double pointDamping =
+        c.line ? 0.0 : 2 * law.dampingRatio * std::sqrt(law.stiffness * nodeMass(c, rod, 1 - c.s, c.s));
+    for (int end = 0; end < 2; ++end) {
+      if (ke[end] <= 0) continue;
+      const int i = node[end];
+      const double share = end ? c.s : 1 - c.s;
+      const double damping = c.line ? 2 * law.dampingRatio * std::sqrt(ke[end] * rod.nodes[i].mass) : share * pointDamping;
+      const double approach = c.normal.dot(c.line ? Vec3(rod.v[i] - c.otherVelocity) : relativeVelocity(c, rod, c.s));
+      double fn = fe[end] - damping * approach;
+      // Damping may slow a separation but never pulls a penetrating rod onto
+      // the wall. A closing contact still apart has no spring force, only
+      // its stiffness, which stops the approach within the step.
+      if (fe[end] > 0) fn = std::max(0.0, fn);
+      out.force[i].head<3>() += fn * c.normal;
+      out.stiffness[i].topLeftCorner<3, 3>() += law.implicitScale * ke[end] * nn;
+      out.damping[i].topLeftCorner<3, 3>() += law.implicitScale * damping * nn;
     }
-    out.force[a].head<3>() += n.wa * f;
-    out.force[b].head<3>() += n.wb * f;
-    out.stiffness[a].topLeftCorner<3, 3>() += n.wa * k;
-    out.stiffness[b].topLeftCorner<3, 3>() += n.wb * k;
-    out.damping[a].topLeftCorner<3, 3>() += n.wa * d;
-    out.damping[b].topLeftCorner<3, 3>() += n.wb * d;
     out.touchedMatrix = true;
+    const double normalForce = n.force();
+    if ((law.frictionStatic <= 0 && law.frictionDynamic <= 0) || normalForce <= 0) continue;
+    // Friction: the stick spring at the force centroid, at the current
+    // positions (later Newton iterations see the step's motion), capped by
+    // Coulomb's cone; shared between the nodes like the normal force.
+    const double wb = c.line ? n.wb() : c.s, wa = 1 - wb;
+    const Mat3 tangent = Mat3::Identity() - nn;
+    const double kt = law.frictionStiffnessRatio * (n.ka + n.kb);
+    const Vec3 vrel = relativeVelocity(c, rod, wb);
+    const Vec3 moved = tangent * (along(rod.x, c, c.s) - c.at);
+    const Vec3 trial = c.slip + moved;
+    // Stick or slide is decided on where the spring will be at the end of
+    // the step: at the detection positions (the first Newton iteration) that
+    // is the start velocity carried over the step; later iterations have
+    // moved the nodes there already.
+    const Vec3 ahead = moved.isZero(0.0) ? Vec3(trial + h * (tangent * vrel)) : trial;
+    const double limit = (c.sliding ? law.frictionDynamic : law.frictionStatic) * normalForce;
+    Vec3 f;
+    Mat3 k, d = Mat3::Zero();
+    if (kt * ahead.norm() <= limit * (1 + 1e-9)) {
+      // Sticking: the spring and its damping are implicit.
+      const double dt = 2 * law.dampingRatio * std::sqrt(kt * nodeMass(c, rod, wa, wb));
+      f = -kt * trial - dt * (tangent * vrel);
+      k = law.implicitScale * kt * tangent;
+      d = law.implicitScale * dt * tangent;
+    } else {
+      // Sliding: the secant of Coulomb's law through the step's slip, a
+      // softer spring sigma = mu_d Fn / |slip ahead| from the stick point,
+      // which gives exactly mu_d Fn if the step slips as predicted and less
+      // if the solve stops the node. A constant mu_d Fn instead is explicit
+      // along the slip: on a 0.4 mg node it reverses a 5 mm/s slip within
+      // one step (mu Fn h / m is 0.5 m/s) and the contact chatters into a
+      // blow-up (and a direction-only stiffness of mu Fn / |elastic slip|
+      // across it made a stiff anchor, as strong as the stick spring).
+      const double slide = law.frictionDynamic * normalForce;
+      const double sigma = slide / ahead.norm();
+      f = -sigma * trial;
+      k = law.implicitScale * sigma * tangent;
+    }
+    out.force[node[0]].head<3>() += wa * f;
+    out.force[node[1]].head<3>() += wb * f;
+    out.stiffness[node[0]].topLeftCorner<3, 3>() += wa * k;
+    out.stiffness[node[1]].topLeftCorner<3, 3>() += wb * k;
+    out.damping[node[0]].topLeftCorner<3, 3>() += wa * d;
+    out.damping[node[1]].topLeftCorner<3, 3>() += wb * d;
   }
 }
 
@@ -147,8 +183,8 @@ double reportContacts(std::span<const ContactPoint> contacts, const RodState& ro
   for (const ContactPoint& c : contacts) {
     deepest = std::max(deepest, -c.gap);
     const NormalEval n = evalNormal(c, rod, law);
-    nodeForce[c.segment] += n.wa * n.force;
-    nodeForce[c.segment + 1] += n.wb * n.force;
+    nodeForce[c.segment] += std::max(0.0, n.fa);
+    nodeForce[c.segment + 1] += std::max(0.0, n.fb);
   }
   return deepest;
 }

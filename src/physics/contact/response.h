@@ -3,19 +3,41 @@
 //
 // Model: penalty contact with its implicit stiffness and damping on the
 // diagonal 6x6 blocks, plus regularised Coulomb friction.
-//  - Normal: f = k * penetration (point contacts, N/m) or, for walls, k per
-//    length times the segment's length times its deepest penetration below
-//    the wall's tangent plane, shared between the nodes by the centroid of
-//    the penetrating part (line contacts, N/m per m): a segment lying along
-//    the wall is carried by both nodes, not by whichever end a closest-point
-//    query returns, and one hitting end-on is as stiff. Damping
-//    c = 2 zeta sqrt(k m) along the normal.
-//    k n n^T and c n n^T go into the implicit matrix (lumped by rows onto
-//    the segment's two nodes), which is what keeps a stiff penalty from
-//    jittering at 1 ms steps. Why penalty and not constraints on the
-//    compliance (SOFA): it keeps the one O(n) block-tridiagonal solve per rod
-//    and needs no second solve or LCP, and the measured penetration stays
-//    far below the 10 % of the wire radius the tests require.
+//  - Normal, walls (line contacts): the wall is the tangent plane of the
+//    nearest triangle feature (anchor, normal). Each node of the segment is
+//    pressed into that plane with k L / 2 times its own penetration (k per
+//    length of rod, L the segment length), so a segment lying on the wall
+//    carries k per length exactly, a node shared by two touching segments
+//    carries k times its Voronoi length, and the force on a node depends on
+//    that node only: the diagonal stiffness block IS the exact Jacobian. (An
+//    earlier law, k L times the deeper end's penetration shared by the
+//    centroid, made one node's force depend on the other node: a coupling the
+//    diagonal blocks cannot hold, neutrally stable at best.)
+//  - Normal, segment pairs (self and rod contacts, point contacts): k times
+//    the penetration at the closest points, shared (1 - s, s); the diagonal
+//    gets the row sums k (1 - s), k s, which bound the rank-one Jacobian from
+//    above, so the lumping only adds numerical damping.
+//  - Damping c = 2 zeta sqrt(k m) along the normal (per node for walls).
+//    k n n^T and c n n^T go into the implicit matrix, which is what keeps a
+//    stiff penalty from jittering at 1 ms steps.
+//  - Speculative contacts (why the coil did not tunnel at 0.6 m/s): a
+//    linearly implicit step only resists what is in its matrix, so a contact
+//    that does not touch at the start of the step is invisible to it, and a
+//    loop snapping through at 0.6 m/s (0.6 mm per 1 ms step, four wire
+//    radii) went 0.18 mm into the wall before the next step saw it.
+//    Detection therefore searches the swept reach (margin + h |v|) and marks
+//    a contact `closing` when the start-of-step velocity would carry it into
+//    touch within the step; a closing node that does not touch yet gets the
+//    penalty's stiffness but no force (a barrier at its start position), so
+//    the implicit solve stops its approach. (The affine alternative,
+//    f = k * penetration also while apart, lands the node on the wall but
+//    pulls with k times the gap when the prediction is wrong: it fed energy
+//    into the coil.) Walls also keep a skin (kWallSkin in detect.h) and the
+//    planes of concave neighbour faces (detect.h).
+//  - Why penalty and not constraints on the compliance (SOFA): it keeps the
+//    one O(n) block-tridiagonal solve per rod and needs no second solve or
+//    LCP, and the measured penetration stays far below the 10 % of the wire
+//    radius the tests require (docs/contact.md).
 //  - What the diagonal blocks cannot hold: the coupling between the two
 //    segments of a self or rod contact (distant nodes: outside the block
 //    tridiagonal band). Each side treats the other as moving with its
@@ -25,19 +47,20 @@
 //  - Friction: a tangential spring k_t = ratio * k anchored where the contact
 //    started sticking (slip vector in ContactPoint), capped at mu_s Fn to
 //    start sliding and mu_d Fn while sliding (Coulomb with static and dynamic
-//    coefficients; the hysteresis stops stick-slip chatter). While sticking
-//    its stiffness and a tangential damping are implicit; while sliding the
-//    force is mu_d Fn against the slip and only its direction is stiff. The
-//    regularisation allows a creep of at most mu_s Fn / k_t (micrometres)
-//    before sliding. Friction on a 0.4 mg node is far stronger than its
-//    inertia (mu Fn h / m is metres per second), so the cap must be found
-//    inside the implicit solve: the spring is evaluated at the current
-//    positions, and each further Newton iteration of the step
-//    (Model::newtonIterations) re-decides stick or slide. With one iteration
-//    a contact that starts to slide sticks for that step (stable, slightly
-//    too much friction); use 3 when sliding speed matters.
+//    coefficients; the hysteresis stops stick-slip chatter). Stick or slide
+//    is decided on the slip the step will have at its start velocity. While
+//    sticking the spring and a tangential damping are implicit. While
+//    sliding the force is the secant of Coulomb's law through that predicted
+//    slip, sigma = mu_d Fn / |slip ahead|, implicit too: exactly mu_d Fn if
+//    the step slips as predicted, less if the solve stops the node, so it
+//    can never reverse the motion. (A constant mu_d Fn is explicit along the
+//    slip; on a 0.4 mg node mu Fn h / m is metres per second, and it drove a
+//    coil loop to snap at 1.6 m/s.) When the slip accelerates, the secant
+//    overestimates friction by a h / v: 1 % on the inclined-plane test. The
+//    regularisation allows a creep of at most mu_s Fn / k_t (micrometres).
 //  - Forces act on the centre line (no moment from the contact offset r):
 //    coil rolling is not modelled.
+#include <algorithm>
 #include <span>
 
 #include "physics/contact/contact_state.h"
@@ -56,14 +79,22 @@ struct ContactLaw {
 };
 
 struct NormalEval {
-  double force = 0;          // elastic normal force, N (>= 0)
-  double wa = 0.5, wb = 0.5; // share of node a and b (sum 1 when in contact)
-  double stiffness = 0;      // d force / d approach, N/m
-  bool touching = false;
+  double fa = 0, fb = 0;     // elastic normal force on node a and b, N (negative: a closing contact still apart)
+  double ka = 0, kb = 0;     // their diagonal stiffness d f / d approach, N/m
+  bool touching = false;     // active in this step (penetrating or closing)
+  double force() const { return std::max(0.0, fa) + std::max(0.0, fb); }  // pushing force, N
+  double wb() const {  // where the pushing force acts on the segment, in [0, 1]
+    const double f = force();
+    return f > 0 ? std::max(0.0, fb) / f : (ka + kb > 0 ? kb / (ka + kb) : 0.5);
+  }
 };
 
 // Normal penalty of contact c at the rod's current positions.
 NormalEval evalNormal(const ContactPoint& c, const RodState& rod, const ContactLaw& law);
+
+// Sets c.closing from the rod's (and the other surface's) velocities at the
+// start of a step of length h; returns whether any part of c touches or closes.
+bool markClosing(ContactPoint& c, const RodState& rod, double h);
 
 // Updates c's friction memory from the matched contact of the last step
 // (or none), the rod's velocities and step h; sets c.normalForce.
@@ -74,8 +105,10 @@ void updateContact(ContactPoint& c, const ContactPoint* previous, const RodState
 // tip), nearest contact point; nullptr if none.
 const ContactPoint* findPrevious(std::span<const ContactPoint> list, const ContactPoint& c, const RodState& rod);
 
-// Adds the forces, stiffness and damping of `contacts` to the rod's arrays.
-void applyContacts(std::span<const ContactPoint> contacts, const RodState& rod, const ContactLaw& law, RodForces& out);
+// Adds the forces, stiffness and damping of `contacts` to the rod's arrays
+// for a step of length h.
+void applyContacts(std::span<const ContactPoint> contacts, const RodState& rod, const ContactLaw& law, double h,
+                   RodForces& out);
 
 // Sums c.normalForce onto the nodes (per-node report) and returns the largest
 // penetration among `contacts`.

@@ -38,7 +38,7 @@ class RodContact final : public Effect {
     const auto& list = c.state.contact.rod;
     for (size_t i = 0; i < list.size(); ++i) {
       const bool withCatheter = c.rod.role == RodRole::Catheter || c.model.rods[list[i].other].role == RodRole::Catheter;
-      applyContacts(std::span(list).subspan(i, 1), c.state, withCatheter ? catheter : coil, out);
+      applyContacts(std::span(list).subspan(i, 1), c.state, withCatheter ? catheter : coil, c.model.timeStep, out);
     }
   }
 };

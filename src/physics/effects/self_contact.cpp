@@ -3,6 +3,7 @@
 // reasons: physics/contact/response.h; broad phase: physics/contact/detect.h.
 #include "physics/contact/detect.h"
 #include "physics/effects/builtin.h"
+#include "physics/model.h"
 
 namespace coilsim {
 namespace {
@@ -32,7 +33,7 @@ class SelfContact final : public Effect {
     detectRodContacts(model, state, true, p[2], law, law);
   }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
-    applyContacts(c.state.contact.self, c.state, lawOf(p), out);
+    applyContacts(c.state.contact.self, c.state, lawOf(p), c.model.timeStep, out);
   }
 };
 

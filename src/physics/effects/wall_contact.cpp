@@ -4,12 +4,13 @@
 // detection: physics/contact/detect.h.
 #include "physics/contact/detect.h"
 #include "physics/effects/builtin.h"
+#include "physics/model.h"
 
 namespace coilsim {
 namespace {
 
 constexpr ParamSpec kParams[] = {
-    {"stiffness_n_mm2", "N/mm2", "penalty stiffness per length of rod pressed into the wall (N/mm per mm)", 50.0, 0.0,
+    {"stiffness_n_mm2", "N/mm2", "penalty stiffness per length of rod pressed into the wall (N/mm per mm)", 200.0, 0.0,
      1e4, 1e6},
     {"damping_ratio", "1", "normal (and sticking) damping as a fraction of critical for the node mass", 1.0, 0.0, 10.0,
      1.0},
@@ -33,7 +34,7 @@ class WallContact final : public Effect {
     detectWallContacts(model, state, p[2], lawOf(p));
   }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
-    applyContacts(c.state.contact.wall, c.state, lawOf(p), out);
+    applyContacts(c.state.contact.wall, c.state, lawOf(p), c.model.timeStep, out);
   }
 };
 
