@@ -91,7 +91,8 @@ nlohmann::ordered_json resultJson(const Model& model, const State& state, const 
   out["stats"] = {{"mean_step_us", st.steps ? 1e6 * st.totalStepSeconds / double(st.steps) : 0.0},
                   {"max_step_us", 1e6 * st.maxStepSeconds},
                   {"newton_iterations", st.newtonIterations},
-                  {"blowups", state.blowups}};
+                  {"blowups", state.blowups},
+                  {"substepped_steps", state.substepped}};
   if (run.statics)
     out["static"] = {{"converged", run.statics->converged},
                      {"increments", run.statics->increments},

@@ -387,6 +387,16 @@ std::string detach(const Deployment& dep, const Model& model, State& state, Depl
   free.w[0] = chain.w[T];
   for (int i = 1; i < n; ++i)
     free.x[i] = chain.x[T + i], free.q[i] = chain.q[T + i], free.v[i] = chain.v[T + i], free.w[i] = chain.w[T + i];
+  // The pusher held the coil's end with a force and a moment (large when the
+  // coil presses on a wall). Released, the end node, with almost no mass or
+  // rotary inertia, swings within microseconds to where its beam is
+  // unstrained; placing it there now spares one implicit step a turn of
+  // tens of degrees, which its linearisation overshoots.
+  if (n > 1) {
+    const Quat toFirst = dep.restF[1].conjugate();
+    free.q[0] = (free.q[1] * toFirst * dep.restF[0]).normalized();
+    free.x[0] = free.x[1] + free.q[1] * (toFirst * (dep.restX[0] - dep.restX[1]));
+  }
   free.beams = model.rods[dep.freeRod].beams;
   free.activeNodes = n;
   free.active = true;

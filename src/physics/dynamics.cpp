@@ -120,27 +120,77 @@ void advanceTargets(const Model& model, State& state, double dt) {
   }
 }
 
-StepReport step(const Model& model, State& state) {
-  const auto start = std::chrono::steady_clock::now();
+namespace {
+
+// One implicit step of model.timeStep from the current state; `detect` runs
+// the effects' per-step preparation (contact detection) first.
+StepReport attempt(const Model& model, State& state, bool detect, long& iterations) {
   for (RodState& r : state.rods) saveStart(r);
   advanceTargets(model, state, model.timeStep);
-  for (const EffectUse& u : model.effects)
-    if (u.enabled) u.effect->beginStep(model, u.values, state);
+  if (detect)
+    for (const EffectUse& u : model.effects)
+      if (u.enabled) u.effect->beginStep(model, u.values, state);
   StepReport report;
-  long iterations = 0;
   for (size_t k = 0; k < model.rods.size() && report.ok(); ++k)
     if (state.rods[k].active) report = stepRod(model, int(k), state.rods[k], state.time, iterations);
   if (report.ok()) {
     const std::string problem = checkHealth(model, state);
     if (!problem.empty()) report = {StepStatus::BlowUp, problem};
   }
+  return report;
+}
+
+// What a refused step must give back, kept only once a step has failed.
+struct Snapshot {
+  std::vector<RodState> rods;
+  double time = 0;
+};
+
+// A shock (a clamp released under load, a loop snapping onto a wall) can
+// turn a node by radians within one step, beyond what one linearised step
+// follows; the same interval in 2, 4 ... kMaxParts substeps usually can.
+// Healthy steps never come here, so the hot path pays nothing.
+constexpr int kMaxParts = 16;
+
+StepReport retryInSubsteps(const Model& model, State& state, const Snapshot& start, long& iterations) {
+  StepReport report;
+  for (int parts = 2; parts <= kMaxParts; parts *= 2) {
+    Model fine = model;
+    fine.timeStep = model.timeStep / parts;
+    report = {};
+    for (int p = 0; p < parts && report.ok(); ++p) {
+      // The contacts found at the start of the interval still hold for the first substep.
+      report = attempt(fine, state, p > 0, iterations);
+      state.time += fine.timeStep;
+    }
+    state.time = start.time;  // step() adds the whole interval
+    if (report.ok()) return report;
+    state.rods = start.rods;
+  }
+  return report;
+}
+
+}  // namespace
+
+StepReport step(const Model& model, State& state) {
+  const auto start = std::chrono::steady_clock::now();
+  long iterations = 0;
+  StepReport report = attempt(model, state, true, iterations);
   if (!report.ok()) {
     for (RodState& r : state.rods) restoreStart(r);
-    ++state.blowups;
-    warnOnce(state, "step refused at t = " + std::to_string(state.time) + " s: " + report.message);
-  } else {
-    state.time += model.timeStep;
+    Snapshot snapshot{state.rods, state.time};
+    const StepReport first = report;
+    report = retryInSubsteps(model, state, snapshot, iterations);
+    if (report.ok()) {
+      ++state.substepped;
+    } else {
+      state.rods = std::move(snapshot.rods);
+      ++state.blowups;
+      warnOnce(state, "step refused at t = " + std::to_string(state.time) + " s: " + first.message);
+      report = first;
+    }
   }
+  if (report.ok()) state.time += model.timeStep;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   StepStats& s = state.stats;
   ++s.steps;

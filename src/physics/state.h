@@ -77,6 +77,7 @@ struct State {
   std::vector<RodState> rods;
   StepStats stats;
   long blowups = 0;                   // steps refused because the result was not healthy
+  long substepped = 0;                // steps that were healthy only in substeps (dynamics.cpp)
   std::vector<std::string> warnings;  // each reported once
 };
 
