@@ -19,6 +19,7 @@
 #ifdef COILSIM_HAVE_UI
 #include "app/bench_render.h"
 #endif
+#include "app/bench_validation.h"
 
 namespace coilsim {
 namespace {
@@ -172,6 +173,7 @@ int runBench(const std::vector<std::string>& args) {
     }
   fig.set("step_cost_ratio_n3000_over_n100_per_beam",
           fig.values["step_us_n3000"] / 3000.0 / (fig.values["step_us_n100"] / 100.0));
+  benchValidationFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
 #ifdef COILSIM_HAVE_UI
   benchRenderFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
 #endif

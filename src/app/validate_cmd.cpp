@@ -181,13 +181,15 @@ std::string stageTable(const Measurement& m, const std::vector<StageComparison>&
   std::ostringstream t;
   auto cells = [&](const StageComparison& s) {
     if (!s.ok) return std::string(" failed | | | |");
-    return " " + fmt("%.4f", s.metrics.stageError) + " | " + fmt("%.3f", s.metrics.nodeErrorMean) + " +- " +
-           fmt("%.3f", s.metrics.nodeErrorSd) + " | " + fmt("%.3f", units::mToMm(s.metrics.meanDisplacement)) + " | " +
-           fmt("%.3f", units::mToMm(s.metrics.meanDistance)) + " |";
+    const StageMetrics& q = s.metrics;
+    char buf[160];
+    std::snprintf(buf, sizeof buf, " %.4f | %.3f +- %.3f | %.3f | %.3f |", q.stageError, q.nodeErrorMean, q.nodeErrorSd,
+                  units::mToMm(q.meanDisplacement), units::mToMm(q.meanDistance));
+    return std::string(buf);
   };
   const bool two = !after.empty();
   t << "| stage | deployed (mm) | stage error | node error mean +- SD | mean displacement (mm) | mean distance (mm) |"
-    << (two ? " stage error after | node error after | displacement | mean distance after (mm) |" : "") << "\n";
+    << (two ? " stage error after | node error after | mean displacement after (mm) | mean distance after (mm) |" : "") << "\n";
   t << "|---|---|---|---|---|---|" << (two ? "---|---|---|---|" : "") << "\n";
   for (size_t k = 0; k < before.size(); ++k) {
     t << "| " << m.stages[k].name << " | " << fmt("%.1f", units::mToMm(m.stages[k].deployed)) << " |" << cells(before[k]);
