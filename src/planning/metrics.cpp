@@ -151,16 +151,26 @@ std::string occlusionClassName(int cls) {
 }
 
 void WallForceStats::add(const std::vector<std::vector<double>>& nodeForces, double dt, double threshold) {
-  bool above = false;
+  double stepMax = 0;
   for (const auto& rod : nodeForces)
     for (const double m : rod) {
       if (m <= 0) continue;
-      max = std::max(max, m);
+      stepMax = std::max(stepMax, m);
       sum += m;
       ++samples;
-      above = above || m > threshold;
     }
-  if (above) timeAbove += dt;
+  peak = std::max(peak, stepMax);
+  const size_t k = size_t(std::max(1, sustainSteps));
+  if (recent_.size() < k) {
+    recent_.push_back(stepMax);
+    if (recent_.size() < k) return;
+  } else {
+    recent_[next_] = stepMax;
+    next_ = (next_ + 1) % k;
+  }
+  const double sustained = *std::min_element(recent_.begin(), recent_.end());
+  max = std::max(max, sustained);
+  if (sustained > threshold) timeAbove += dt;
 }
 
 }  // namespace coilsim::planning

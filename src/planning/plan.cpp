@@ -13,6 +13,7 @@
 #include "io/units.h"
 #include "physics/deployment.h"
 #include "planning/contact_forces.h"
+#include "planning/run_contacts.h"
 
 namespace coilsim::planning {
 namespace {
@@ -63,6 +64,7 @@ CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const C
       dep.catheter.direction = rotate(dep.catheter.direction.normalized(), dep.catheter.referenceNormal.normalized(),
                                       units::degToRad(c.tipTiltDeg));
     io::CompiledScene compiled = io::compileSceneWithDeployment(spec);
+    addRunContacts(compiled.model, setup.sac);
     r.model = compileModel(compiled.model);
     r.state = makeState(r.model);
     const Deployment& d = *compiled.deployment;
@@ -133,6 +135,9 @@ ordered_json planJson(const PlanSetup& setup, const std::vector<CandidateResult>
     c["variant"] = r.variant;
     c["ok"] = r.ok;
     if (!r.ok) c["error"] = r.error;
+    c["placed"] = r.ok && r.deploy.placed;
+    if (!r.deploy.notPlaced.empty()) c["not_placed"] = r.deploy.notPlaced;
+    c["deployed_mm"] = round6(mm(r.deploy.deployed));
     c["packing_density"] = round6(r.sac.packingDensity);
     c["sac_volume_mm3"] = round6(mm3(r.sac.sacVolume));
     c["coil_volume_mm3"] = round6(mm3(r.sac.coilVolume));
@@ -144,14 +149,19 @@ ordered_json planJson(const PlanSetup& setup, const std::vector<CandidateResult>
     if (r.deploy.wallForcesAvailable) {
       c["max_wall_force_mN"] = round6(milliNewton(r.deploy.wall.max));
       c["mean_wall_force_mN"] = round6(milliNewton(r.deploy.wall.mean()));
+      c["peak_wall_force_mN"] = round6(milliNewton(r.deploy.wall.peak));
+      c["time_above_safety_s"] = round6(r.deploy.wall.timeAbove);
     } else {
       c["max_wall_force_mN"] = nullptr;
       c["mean_wall_force_mN"] = nullptr;
+      c["peak_wall_force_mN"] = nullptr;
+      c["time_above_safety_s"] = nullptr;
     }
     c["kickback_mm"] = round6(mm(r.deploy.maxKickback));
     c["max_deployment_force_mN"] = round6(milliNewton(r.deploy.maxDeploymentForce));
     c["max_tip_force_mN"] = round6(milliNewton(r.deploy.maxTipForce));
     c["corrections"] = r.deploy.corrections;
+    c["pull_backs"] = r.deploy.pullBacks;
     c["occlusion_class"] = r.occlusion;
     c["occlusion"] = occlusionClassName(r.occlusion);
     c["simulated_s"] = round6(r.deploy.time);
@@ -164,32 +174,43 @@ ordered_json planJson(const PlanSetup& setup, const std::vector<CandidateResult>
 
 std::string planMarkdown(const ordered_json& plan) {
   std::string md = "# Coil plan: " + plan.value("scene", std::string("?")) + "\n\n";
-  char buf[512];
+  char buf[768];
   std::snprintf(buf, sizeof buf, "Sac volume %.1f mm^3 (closed by the neck plane).\n\n",
                 plan.value("sac_volume_mm3", 0.0));
   md += buf;
-  md += "| coil | variant | packing | coil vol. mm^3 | neck cov. | protruding | max wall mN | kickback mm | "
-        "push force mN | twists | class | ok |\n";
-  md += "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  md += "| coil | variant | placed | packing | coil vol. mm^3 | neck cov. | protruding | max wall mN | mean wall mN | "
+        "kickback mm | push force mN | twists / pull-backs | class |\n";
+  md += "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  std::string notes, images;
+  auto number = [](const nlohmann::ordered_json& v, const char* format) {
+    if (v.is_null()) return std::string("n/a");
+    char w[32];
+    std::snprintf(w, sizeof w, format, v.get<double>());
+    return std::string(w);
+  };
   for (const auto& c : plan.at("coils")) {
-    const std::string wall = c["max_wall_force_mN"].is_null() ? "n/a" : [&] {
-      char w[32];
-      std::snprintf(w, sizeof w, "%.3g", c["max_wall_force_mN"].get<double>());
-      return std::string(w);
-    }();
-    std::snprintf(buf, sizeof buf, "| %s | %s | %.1f %% | %.2f | %.0f %% | %s | %s | %.3g | %.3g | %d | %s | %s |\n",
-                  c["name"].get<std::string>().c_str(), c["variant"].get<std::string>().c_str(),
-                  100 * c["packing_density"].get<double>(), c["coil_volume_mm3"].get<double>(),
-                  100 * c["neck_coverage"].get<double>(), c["protruding"].get<bool>() ? "yes" : "no", wall.c_str(),
-                  c["kickback_mm"].get<double>(), c["max_deployment_force_mN"].get<double>(),
-                  c["corrections"].get<int>(), c["occlusion"].get<std::string>().c_str(),
-                  c["ok"].get<bool>() ? "yes" : ("no: " + c.value("error", std::string())).c_str());
+    const std::string name = c.value("name", std::string("?")), variant = c.value("variant", std::string("?"));
+    const bool ok = c.value("ok", false), placed = c.value("placed", ok);
+    const std::string placedText = !ok ? "failed" : placed ? "yes" : "no";
+    std::snprintf(buf, sizeof buf, "| %s | %s | %s | %.1f %% | %.2f | %.0f %% | %s | %s | %s | %.3g | %.3g | %d / %d | %s |\n",
+                  name.c_str(), variant.c_str(), placedText.c_str(), 100 * c.value("packing_density", 0.0),
+                  c.value("coil_volume_mm3", 0.0), 100 * c.value("neck_coverage", 0.0),
+                  c.value("protruding", false) ? "yes" : "no", number(c["max_wall_force_mN"], "%.3g").c_str(),
+                  number(c["mean_wall_force_mN"], "%.3g").c_str(), c.value("kickback_mm", 0.0),
+                  c.value("max_deployment_force_mN", 0.0), c.value("corrections", 0), c.value("pull_backs", 0),
+                  c.value("occlusion", std::string("?")).c_str());
     md += buf;
-    if (c.contains("screenshot")) md += "\n![" + c["name"].get<std::string>() + "](" + c["screenshot"].get<std::string>() + ")\n\n";
+    if (!ok) notes += "- " + name + " (" + variant + "): failed: " + c.value("error", std::string()) + "\n";
+    else if (c.contains("not_placed")) notes += "- " + name + " (" + variant + "): not placed: " + c["not_placed"].get<std::string>() + "\n";
+    if (c.contains("screenshot")) images += "![" + name + " (" + variant + ")](" + c["screenshot"].get<std::string>() + ")\n";
   }
-  md += "\npacking = coil volume (pi r^2 times the coil length inside the sac) / sac volume; class: Raymond-Roy-like "
-        "prediction from packing and neck coverage (thresholds in docs/planning.md). n/a: this build has no contact "
-        "forces to report.\n";
+  if (!notes.empty()) md += "\n" + notes;
+  md += "\npacking = coil volume (pi r^2 times the coil length inside the sac) / sac volume; placed = pushed out "
+        "fully and detached (the operator gives a coil up when the tip force stays high after twists and pull-backs); "
+        "push force = largest axial force felt at the catheter tip with the pusher at rest; class: Raymond-Roy-like "
+        "prediction from packing and neck coverage (thresholds in docs/planning.md); n/a: the run had no wall "
+        "contact to measure.\n";
+  if (!images.empty()) md += "\n" + images;
   return md;
 }
 

@@ -9,6 +9,7 @@
 #include "io/units.h"
 #include "physics/integrator.h"
 #include "planning/contact_forces.h"
+#include "planning/run_contacts.h"
 
 namespace coilsim::planning {
 namespace {
@@ -95,6 +96,7 @@ PracticeSession::PracticeSession(const PracticeCase& pc, const std::string& coil
   io::CompiledScene compiled;
   try {
     compiled = io::compileSceneWithDeployment(spec);
+    addRunContacts(compiled.model, pc.sac);
     model_ = compileModel(compiled.model);
   } catch (const io::InputError&) {
     throw;
@@ -168,10 +170,9 @@ bool PracticeSession::step() {
   if (!ds_.detached) score_.maxTipForce = std::max(score_.maxTipForce, tipForce(deployment_, state_).norm());
   if (contacts_ && contacts_(model_, state_, forces_)) {
     score_.wallForcesAvailable = true;
-    WallForceStats w;
-    w.add(forces_, dt, case_.goal.maxWallForce);
-    score_.maxWallForce = std::max(score_.maxWallForce, w.max);
-    score_.timeAboveSafety += w.timeAbove;
+    wall_.add(forces_, dt, case_.goal.maxWallForce);
+    score_.maxWallForce = wall_.max;
+    score_.timeAboveSafety = wall_.timeAbove;
   }
   const long every = std::max(1L, std::lround(kSampleInterval / dt));
   if (steps_ % every == 0) sample();

@@ -104,6 +104,7 @@ class PracticeSession {
   bool protruding_ = false;
   ScoreSheet score_;
   std::vector<std::vector<double>> forces_;
+  WallForceStats wall_;
   std::vector<nlohmann::ordered_json> recorded_;  // accepted commands as the timeline file holds them
   std::vector<std::pair<double, std::string>> views_;
 };
