@@ -29,7 +29,7 @@ using planning::PlanSetup;
 int usage(const std::string& message) {
   std::fprintf(stderr,
                "coilsim plan: %s\n"
-               "usage: coilsim plan SCENE|CASE --out DIR [--coils a,b,c] [--jobs N] [--sac FILE] [--catalogue DIR]\n"
+               "usage: coilsim plan SCENE|CASE --out DIR [--coils a,b+c] [--jobs N] [--sac FILE] [--catalogue DIR]\n"
                "         [--speed MM_S] [--force-threshold MN] [--spacing MM] [--max-time S]\n"
                "         [--sensitivity SHIFT_MM,TILT_DEG] [--no-screenshots] [--size WxH]\n"
                "       coilsim plan-merge DIR... --out DIR\n"
@@ -154,7 +154,7 @@ std::string fileSafe(std::string s) {
 int plan(const PlanArgs& a) {
   PlanSetup setup;
   setup.label = a.input;
-  std::vector<io::CoilSpec> chosen;
+  std::vector<std::vector<io::CoilSpec>> chosen;  // each a coil or a sequence
   const nlohmann::json doc = io::readJsonFile(a.input);
   const bool isCase = doc.is_object() && doc.value("format", std::string()) == planning::kCaseFormat;
   const std::vector<io::CoilSpec> catalogue =
@@ -165,7 +165,8 @@ int plan(const PlanArgs& a) {
     setup.sac = a.sac.empty() ? c.sac : planning::loadSac(a.sac);
     setup.spacingMm = c.spacingMm;
     setup.deploy.wallForceThreshold = c.goal.maxWallForce;
-    if (a.coils.empty()) chosen = c.coils;
+    if (a.coils.empty())
+      for (const io::CoilSpec& coil : c.coils) chosen.push_back({coil});
   } else {
     setup.scene = io::loadScene(a.input);
     if (!setup.scene.deployment)
@@ -174,7 +175,12 @@ int plan(const PlanArgs& a) {
       return usage(a.input + " is a scene: give the sac and neck plane with --sac FILE, or plan a case file (scenes/cases/*.json)");
     setup.sac = planning::loadSac(a.sac);
   }
-  for (const std::string& name : split(a.coils, ',')) chosen.push_back(io::findCoil(catalogue, name));
+  // "a,b": two candidates; "a+b": one sequence (a, then b into the same sac).
+  for (const std::string& item : split(a.coils, ',')) {
+    std::vector<io::CoilSpec> sequence;
+    for (const std::string& name : split(item, '+')) sequence.push_back(io::findCoil(catalogue, name));
+    if (!sequence.empty()) chosen.push_back(std::move(sequence));
+  }
   if (chosen.empty()) return usage("no coils to plan: give --coils a,b,c");
   if (a.spacingMm) setup.spacingMm = *a.spacingMm;
   if (a.speedMmS) setup.deploy.pushSpeed = units::mmPerSToMPerS(*a.speedMmS);
@@ -186,7 +192,7 @@ int plan(const PlanArgs& a) {
     return usage(a.input + ": " + e.what());
   }
   std::vector<Candidate> candidates;
-  for (const io::CoilSpec& c : chosen) {
+  for (const std::vector<io::CoilSpec>& c : chosen) {
     if (a.sensitivity) {
       for (Candidate& v : planning::sensitivityVariants(c, a.sensitivity->first, a.sensitivity->second))
         candidates.push_back(std::move(v));

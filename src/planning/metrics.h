@@ -16,7 +16,10 @@ namespace coilsim::planning {
 // Coil centre lines as metrics read them: one polyline per coil rod.
 struct CoilLines {
   std::vector<std::vector<Vec3>> lines;  // m
-  double radius = 0;                     // primary coil outer radius, m
+  double radius = 0;                     // primary coil outer radius, m (the largest, when radii differ)
+  std::vector<double> radii;             // per line, m (a sequence of coils of different primary
+                                         // diameters); empty: every line has `radius`
+  double radiusOf(size_t line) const { return line < radii.size() ? radii[line] : radius; }
 };
 
 // The active nodes of every coil-role rod of `model`. A deployment chain

@@ -48,29 +48,107 @@ void prepareSac(PlanSetup& setup) {
   setup.neck = sampleNeck(setup.sac);
 }
 
+std::string Candidate::name() const {
+  std::string n;
+  for (const io::CoilSpec& c : coils) n += (n.empty() ? "" : " + ") + c.name;
+  return n;
+}
+
+namespace {
+
+// A coil of a sequence already placed: its rod as the model defines it and its pose now.
+struct PlacedCoil {
+  RodDef def;
+  RodState pose;
+};
+
+// Folds one coil's deployment into the sequence's.
+void accumulate(AutoDeployResult& total, AutoDeployResult&& one) {
+  total.ok = one.ok;
+  total.placed = one.placed;
+  total.error = one.error;
+  total.notPlaced = one.notPlaced;
+  total.time += one.time;
+  total.steps += one.steps;
+  total.deployed = one.deployed;
+  total.maxTipForce = std::max(total.maxTipForce, one.maxTipForce);
+  total.maxDeploymentForce = std::max(total.maxDeploymentForce, one.maxDeploymentForce);
+  total.maxKickback = std::max(total.maxKickback, one.maxKickback);
+  total.corrections += one.corrections;
+  total.pullBacks += one.pullBacks;
+  total.wallForcesAvailable = total.wallForcesAvailable || one.wallForcesAvailable;
+  WallForceStats& w = total.wall;
+  w.max = std::max(w.max, one.wall.max);
+  w.peak = std::max(w.peak, one.wall.peak);
+  w.sum += one.wall.sum;
+  w.samples += one.wall.samples;
+  w.timeAbove += one.wall.timeAbove;
+  for (const TimedCommand& c : one.timeline) total.timeline.push_back({c.time, c.command});
+  for (std::string& l : one.log) total.log.push_back(std::move(l));
+}
+
+}  // namespace
+
 CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const ContactForceSource& contacts) {
   CandidateResult r;
-  r.name = c.coil.name;
+  r.name = c.name();
   r.variant = c.variant;
+  r.deploy.placed = false;
   const auto start = std::chrono::steady_clock::now();
   try {
-    io::SceneSpec spec = setup.scene;
-    if (!spec.deployment) throw std::invalid_argument(setup.label + " has no \"deployment\" block");
-    io::DeploymentSpec& dep = *spec.deployment;
-    io::applyCoil(c.coil, setup.spacingMm, dep);
-    dep.initialDeployedMm = std::min(dep.initialDeployedMm, 0.5 * dep.lengthMm);
-    dep.catheter.tipPositionMm += c.tipShiftMm;
-    if (c.tipTiltDeg != 0)
-      dep.catheter.direction = rotate(dep.catheter.direction.normalized(), dep.catheter.referenceNormal.normalized(),
-                                      units::degToRad(c.tipTiltDeg));
-    io::CompiledScene compiled = io::compileSceneWithDeployment(spec);
-    addRunContacts(compiled.model, setup.sac);
-    r.model = compileModel(compiled.model);
-    r.state = makeState(r.model);
-    const Deployment& d = *compiled.deployment;
-    DeploymentState ds = initDeployment(d, r.model, r.state, compiled.initialDeployed, compiled.initialTwist);
-    r.deploy = autoDeploy(d, r.model, r.state, ds, setup.deploy, contacts ? contacts : ContactForceSource(wallContactForces));
-    r.sac = measureSac(setup.sac, setup.sacVolume, setup.neck, coilLines(r.model, r.state, d.chainRod, d.tipNode + 1), setup.metrics);
+    if (c.coils.empty()) throw std::invalid_argument("a candidate without coils");
+    std::vector<PlacedCoil> placed;
+    int chainRod = -1, catheterNodes = 0;  // of the last deployment: its chain starts with catheter nodes
+    for (size_t k = 0; k < c.coils.size(); ++k) {
+      const io::CoilSpec& coil = c.coils[k];
+      io::SceneSpec spec = setup.scene;
+      if (!spec.deployment) throw std::invalid_argument(setup.label + " has no \"deployment\" block");
+      io::DeploymentSpec& dep = *spec.deployment;
+      io::applyCoil(coil, setup.spacingMm, dep);
+      dep.initialDeployedMm = std::min(dep.initialDeployedMm, 0.5 * dep.lengthMm);
+      dep.catheter.tipPositionMm += c.tipShiftMm;
+      if (c.tipTiltDeg != 0)
+        dep.catheter.direction = rotate(dep.catheter.direction.normalized(), dep.catheter.referenceNormal.normalized(),
+                                        units::degToRad(c.tipTiltDeg));
+      io::CompiledScene compiled = io::compileSceneWithDeployment(spec);
+      // Coils placed before, after every rod of the scene and deployment, so their indices hold.
+      const size_t firstPlaced = compiled.model.rods.size();
+      for (const PlacedCoil& p : placed) compiled.model.rods.push_back(p.def);
+      addRunContacts(compiled.model, setup.sac);
+      r.model = compileModel(compiled.model);
+      r.state = makeState(r.model);
+      for (size_t i = 0; i < placed.size(); ++i) {
+        RodState& s = r.state.rods[firstPlaced + i];
+        const RodState& p = placed[i].pose;
+        s.active = true;
+        s.activeNodes = p.activeNodes;
+        s.beams = p.beams, s.nodes = p.nodes, s.x = p.x, s.q = p.q;
+        std::fill(s.v.begin(), s.v.end(), Vec3::Zero());
+        std::fill(s.w.begin(), s.w.end(), Vec3::Zero());
+      }
+      const Deployment& d = *compiled.deployment;
+      chainRod = d.chainRod, catheterNodes = d.tipNode + 1;
+      DeploymentState ds = initDeployment(d, r.model, r.state, compiled.initialDeployed, compiled.initialTwist);
+      setDrawnCatheterActive(d, r.state, false);
+      AutoDeployResult one =
+          autoDeploy(d, r.model, r.state, ds, setup.deploy, contacts ? contacts : ContactForceSource(wallContactForces));
+      setDrawnCatheterActive(d, r.state, true);  // for the picture
+      if (c.coils.size() > 1) {
+        const std::string label = coil.name + ": ";
+        for (std::string& l : one.log) l = label + l;
+        if (!one.notPlaced.empty()) one.notPlaced = label + one.notPlaced;
+        if (!one.error.empty()) one.error = label + one.error;
+      }
+      const bool goOn = one.ok && one.placed;
+      accumulate(r.deploy, std::move(one));
+      if (!goOn) break;
+      // The placed coils move while the next one goes in: keep their poses, and add this one.
+      for (size_t i = 0; i < placed.size(); ++i) placed[i].pose = r.state.rods[firstPlaced + i];
+      PlacedCoil now{compiled.model.rods[size_t(d.freeRod)], r.state.rods[size_t(d.freeRod)]};
+      now.def.name = coil.name + " (placed)";
+      placed.push_back(std::move(now));
+    }
+    r.sac = measureSac(setup.sac, setup.sacVolume, setup.neck, coilLines(r.model, r.state, chainRod, catheterNodes), setup.metrics);
     r.occlusion = occlusionClass(r.sac.packingDensity, r.sac.neckCoverage);
     r.ok = r.deploy.ok;
     r.error = r.deploy.error;
@@ -97,7 +175,7 @@ std::vector<CandidateResult> runCandidates(const PlanSetup& setup, const std::ve
   return results;
 }
 
-std::vector<Candidate> sensitivityVariants(const io::CoilSpec& coil, double shiftMm, double tiltDeg) {
+std::vector<Candidate> sensitivityVariants(const std::vector<io::CoilSpec>& coil, double shiftMm, double tiltDeg) {
   std::vector<Candidate> v;
   v.push_back({coil, "nominal", Vec3::Zero(), 0});
   // The axes across the exit direction are set per scene by runCandidate's

@@ -31,4 +31,9 @@ void addRunContacts(ModelDef& def, const Sac& sac) {
   }
 }
 
+void setDrawnCatheterActive(const Deployment& dep, State& state, bool active) {
+  if (dep.flexible() || dep.catheterRod < 0) return;
+  state.rods[size_t(dep.catheterRod)].active = active;
+}
+
 }  // namespace coilsim::planning

@@ -5,7 +5,9 @@
 // (rod_contact). A case scene need not list any of this: the planning layer
 // adds what is missing, so every plan and practice run measures wall forces
 // from the contact layer instead of letting the coil pass through the wall.
+#include "physics/deployment.h"
 #include "physics/model.h"
+#include "physics/state.h"
 #include "planning/sac_geometry.h"
 
 namespace coilsim::planning {
@@ -23,5 +25,14 @@ inline constexpr double kRunWallStiffness = 5e6;
 // keeps the scene's settings: a run without wall contact then reports wall
 // forces as unavailable. Throws std::invalid_argument if the sac has no mesh.
 void addRunContacts(ModelDef& def, const Sac& sac);
+
+// The rigid catheter tip is not simulated (the coil inside it is not
+// either); its rod is only drawn. As a rod it would take part in
+// rod_contact as a solid capsule, and the detached coil's proximal end,
+// which sits on the catheter's axis at the tip, would be inside it the step
+// after detach and be thrown out (an axial strain blow-up at detach in every
+// plan). So runs take the drawn rigid catheter out of the step (inactive)
+// and put it back for pictures. A flexible catheter is simulated and stays.
+void setDrawnCatheterActive(const Deployment& dep, State& state, bool active);
 
 }  // namespace coilsim::planning
