@@ -154,6 +154,7 @@ bool PracticeSession::step() {
   // Counted in steps so the time is exactly steps x dt, as a reader would compute it.
   if (fluoroscopic(view_)) score_.fluoroscopyTime = double(++fluoroSteps_) * dt;
   const bool wasDetached = ds_.detached;
+  const double deployedBefore = ds_.deployed;
   controller_.advance(deployment_, model_, state_, ds_, dt);
   controller_.notes.clear();
   if (ds_.detached && !wasDetached) {
@@ -177,7 +178,9 @@ bool PracticeSession::step() {
     score_.error = "step refused at t = " + std::to_string(time()) + " s: " + rep.message;
     return false;
   }
-  if (!ds_.detached) score_.maxTipForce = std::max(score_.maxTipForce, tipForce(deployment_, state_).norm());
+  // The force a hand feels, with the pusher at rest (FeltTipForce: the sliding tip beam spikes while pushing).
+  if (!ds_.detached && felt_.add(deployment_, state_, ds_.deployed == deployedBefore, dt))
+    score_.maxTipForce = std::max(score_.maxTipForce, felt_.felt);
   if (contacts_ && contacts_(model_, state_, forces_)) {
     score_.wallForcesAvailable = true;
     wall_.add(forces_, dt, case_.goal.maxWallForce);

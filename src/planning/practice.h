@@ -38,9 +38,9 @@ struct ScoreSheet {
   int protrusionEvents = 0;        // times the coil started protruding (sampled every 0.1 s)
   bool protrudingAtEnd = false;
   bool wallForcesAvailable = false;
-  double maxWallForce = 0;         // N
+  double maxWallForce = 0;         // N, largest wall load lasting 5 steps (WallForceStats)
   double timeAboveSafety = 0;      // s with some wall force above the goal's threshold
-  double maxTipForce = 0;          // N, force of the coil on the catheter tip
+  double maxTipForce = 0;          // N, force of the coil on the catheter tip felt with the pusher at rest
   int repositionings = 0;          // pulls of the coil back into the catheter
   double fluoroscopyTime = 0;      // s spent in the X-ray (xray or biplane) view
   bool detached = false;
@@ -105,6 +105,7 @@ class PracticeSession {
   ScoreSheet score_;
   std::vector<std::vector<double>> forces_;
   WallForceStats wall_;
+  FeltTipForce felt_;
   long detachStep_ = 0;
   std::shared_ptr<Model> fineModel_;  // the model with a substep time step, for the steps after detach
   std::vector<nlohmann::ordered_json> recorded_;  // accepted commands as the timeline file holds them
