@@ -114,11 +114,11 @@ AutoDeployResult autoDeploy(const Deployment& dep, const Model& model, State& st
       r.deployed = ds.deployed;
       return r;
     }
-    const double before = ds.deployed;
+    const double before = ds.deployed, twistBefore = ds.twist;
     controller.advance(dep, model, state, ds, dt);
     for (const std::string& n : controller.notes) r.log.push_back(sText(t) + ": " + n);
     controller.notes.clear();
-    const bool pusherMoved = ds.deployed != before;
+    const bool pusherMoved = ds.deployed != before || ds.twist != twistBefore;  // pushed, pulled or twisted
     // The steps after detach in substeps (kDetachSubsteps): without them, an axial-strain blow-up at detach.
     const bool fine = ds.detached && phase == Phase::After && t < detachTime + kDetachFineSteps * dt - 0.5 * dt;
     if (fine && !fineModel) {

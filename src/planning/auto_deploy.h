@@ -81,7 +81,7 @@ class FeltTipForce {
  public:
   explicit FeltTipForce(double window = 0.02) : window_(window) {}
   // One step, after it was taken: `still` when the pusher did not move
-  // during it. Returns true when a felt value is available: the pusher has
+  // (push, pull or twist) during it. Returns true when a felt value is available: the pusher has
   // rested `window` s; `felt` and `axial` (N) then follow the tip force with
   // a time constant of window / 4, started window / 2 into the rest (past
   // the decay of the sliding transients).

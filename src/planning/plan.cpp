@@ -1,6 +1,7 @@
 // Candidate runs, threads, plan.json / plan.md, merging.
 #include "planning/plan.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -19,6 +20,8 @@ namespace coilsim::planning {
 namespace {
 
 using nlohmann::ordered_json;
+
+constexpr double kPictureCatheterMm = 4;  // drawn length of the rigid catheter in plan pictures
 
 // Edge units of plan reports, through units.h where it has them.
 double mm(double m) { return units::mToMm(m); }
@@ -107,6 +110,8 @@ CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const C
       io::applyCoil(coil, setup.spacingMm, dep);
       dep.initialDeployedMm = std::min(dep.initialDeployedMm, 0.5 * dep.lengthMm);
       dep.catheter.tipPositionMm += c.tipShiftMm;
+      // The rigid catheter is only drawn (setDrawnCatheterActive): a short stub lets the picture frame the sac.
+      dep.catheter.drawLengthMm = std::min(dep.catheter.drawLengthMm, kPictureCatheterMm);
       if (c.tipTiltDeg != 0)
         dep.catheter.direction = rotate(dep.catheter.direction.normalized(), dep.catheter.referenceNormal.normalized(),
                                         units::degToRad(c.tipTiltDeg));
@@ -250,6 +255,44 @@ ordered_json planJson(const PlanSetup& setup, const std::vector<CandidateResult>
   return plan;
 }
 
+namespace {
+
+// Per coil with catheter variants (--sensitivity): the spread of the outcome over them.
+std::string sensitivityMarkdown(const ordered_json& plan) {
+  struct Spread {
+    int runs = 0, placed = 0, protruding = 0;
+    double lo = 1e300, hi = -1e300, wallHi = 0;
+  };
+  std::vector<std::pair<std::string, Spread>> coils;
+  for (const auto& c : plan.at("coils")) {
+    const std::string name = c.value("name", std::string("?"));
+    auto it = std::find_if(coils.begin(), coils.end(), [&](const auto& e) { return e.first == name; });
+    if (it == coils.end()) it = coils.insert(coils.end(), {name, Spread{}});
+    Spread& s = it->second;
+    ++s.runs;
+    if (c.value("ok", false) && c.value("placed", true)) ++s.placed;
+    if (c.value("protruding", false)) ++s.protruding;
+    const double p = c.value("packing_density", 0.0);
+    s.lo = std::min(s.lo, p), s.hi = std::max(s.hi, p);
+    if (c.contains("max_wall_force_mN") && c["max_wall_force_mN"].is_number())
+      s.wallHi = std::max(s.wallHi, c["max_wall_force_mN"].get<double>());
+  }
+  if (std::none_of(coils.begin(), coils.end(), [](const auto& e) { return e.second.runs > 1; })) return "";
+  std::string md = "\n## Sensitivity to the catheter position\n\n| coil | runs | placed | packing (min - max) | "
+                   "protruding | max wall mN |\n|---|---|---|---|---|---|\n";
+  char buf[512];
+  for (const auto& [name, s] : coils) {
+    if (s.runs < 2) continue;
+    std::snprintf(buf, sizeof buf, "| %s | %d | %d of %d | %.1f - %.1f %% | %d of %d | %.3g |\n", name.c_str(), s.runs,
+                  s.placed, s.runs, 100 * s.lo, 100 * s.hi, s.protruding, s.runs, s.wallHi);
+    md += buf;
+  }
+  md += "\nA robust choice keeps its packing, protrusion and placement over the variants.\n";
+  return md;
+}
+
+}  // namespace
+
 std::string planMarkdown(const ordered_json& plan) {
   std::string md = "# Coil plan: " + plan.value("scene", std::string("?")) + "\n\n";
   char buf[768];
@@ -283,6 +326,7 @@ std::string planMarkdown(const ordered_json& plan) {
     if (c.contains("screenshot")) images += "![" + name + " (" + variant + ")](" + c["screenshot"].get<std::string>() + ")\n";
   }
   if (!notes.empty()) md += "\n" + notes;
+  md += sensitivityMarkdown(plan);
   md += "\npacking = coil volume (pi r^2 times the coil length inside the sac) / sac volume; placed = pushed out "
         "fully and detached (the operator gives a coil up when the tip force stays high after twists and pull-backs); "
         "push force = largest axial force felt at the catheter tip with the pusher at rest; class: Raymond-Roy-like "

@@ -154,7 +154,7 @@ bool PracticeSession::step() {
   // Counted in steps so the time is exactly steps x dt, as a reader would compute it.
   if (fluoroscopic(view_)) score_.fluoroscopyTime = double(++fluoroSteps_) * dt;
   const bool wasDetached = ds_.detached;
-  const double deployedBefore = ds_.deployed;
+  const double deployedBefore = ds_.deployed, twistBefore = ds_.twist;
   controller_.advance(deployment_, model_, state_, ds_, dt);
   controller_.notes.clear();
   if (ds_.detached && !wasDetached) {
@@ -179,7 +179,7 @@ bool PracticeSession::step() {
     return false;
   }
   // The force a hand feels, with the pusher at rest (FeltTipForce: the sliding tip beam spikes while pushing).
-  if (!ds_.detached && felt_.add(deployment_, state_, ds_.deployed == deployedBefore, dt))
+  if (!ds_.detached && felt_.add(deployment_, state_, ds_.deployed == deployedBefore && ds_.twist == twistBefore, dt))
     score_.maxTipForce = std::max(score_.maxTipForce, felt_.felt);
   if (contacts_ && contacts_(model_, state_, forces_)) {
     score_.wallForcesAvailable = true;
