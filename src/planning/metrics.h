@@ -23,8 +23,9 @@ struct CoilLines {
 };
 
 // The active nodes of every coil-role rod of `model`. A deployment chain
-// starts with catheter nodes (0..Deployment::tipNode, the tip included),
-// which are not coil: the first `skipNodes` nodes of rod `chainRod` are left out.
+// starts with catheter nodes (0..Deployment::tipNode); the coil leaves the
+// catheter at the tip node, so its line starts there: pass skipNodes =
+// tipNode to leave out the nodes before it (0 for the rigid tip).
 CoilLines coilLines(const Model& model, const State& state, int chainRod = -1, int skipNodes = 0);
 
 // The neck opening sampled once: centres of square cells of the neck plane

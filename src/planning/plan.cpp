@@ -101,7 +101,7 @@ CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const C
   try {
     if (c.coils.empty()) throw std::invalid_argument("a candidate without coils");
     std::vector<PlacedCoil> placed;
-    int chainRod = -1, catheterNodes = 0;  // of the last deployment: its chain starts with catheter nodes
+    int chainRod = -1, catheterNodes = 0;  // of the last deployment: chain nodes before its tip are catheter
     for (size_t k = 0; k < c.coils.size(); ++k) {
       const io::CoilSpec& coil = c.coils[k];
       io::SceneSpec spec = setup.scene;
@@ -132,7 +132,7 @@ CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const C
         std::fill(s.w.begin(), s.w.end(), Vec3::Zero());
       }
       const Deployment& d = *compiled.deployment;
-      chainRod = d.chainRod, catheterNodes = d.tipNode + 1;
+      chainRod = d.chainRod, catheterNodes = d.tipNode;
       DeploymentState ds = initDeployment(d, r.model, r.state, compiled.initialDeployed, compiled.initialTwist);
       setDrawnCatheterActive(d, r.state, false);
       AutoDeployResult one =

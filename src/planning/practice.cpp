@@ -143,7 +143,7 @@ void PracticeSession::setView(const std::string& view) {
 }
 
 void PracticeSession::sample() {
-  const SacMetrics m = measureSac(sac_, sacVolume_, neck_, coilLines(model_, state_, deployment_.chainRod, deployment_.tipNode + 1));
+  const SacMetrics m = measureSac(sac_, sacVolume_, neck_, coilLines(model_, state_, deployment_.chainRod, deployment_.tipNode));
   if (m.protruding && !protruding_) ++score_.protrusionEvents;
   protruding_ = m.protruding;
 }
@@ -196,7 +196,7 @@ ScoreSheet PracticeSession::finish() {
   ScoreSheet s = score_;
   s.time = time();
   s.coilLengthPlaced = ds_.deployed;
-  const SacMetrics m = measureSac(sac_, sacVolume_, neck_, coilLines(model_, state_, deployment_.chainRod, deployment_.tipNode + 1));
+  const SacMetrics m = measureSac(sac_, sacVolume_, neck_, coilLines(model_, state_, deployment_.chainRod, deployment_.tipNode));
   s.packingDensity = m.packingDensity;
   s.neckCoverage = m.neckCoverage;
   s.occlusion = occlusionClass(m.packingDensity, m.neckCoverage);
@@ -253,7 +253,8 @@ SessionRecording loadSession(const std::string& path) { return parseSession(io::
 
 ScoreSheet playSession(const PracticeCase& pc, const std::string& coil, const std::vector<TimedCommand>& timeline,
                        const std::vector<std::pair<double, std::string>>& views, double end,
-                       ordered_json* recordingOut, const ContactForceSource& contacts) {
+                       ordered_json* recordingOut, const ContactForceSource& contacts,
+                       const std::function<void(const PracticeSession&)>& atEnd) {
   PracticeSession session(pc, coil, contacts);
   const double dt = session.model().timeStep;
   const long steps = std::lround(end / dt);
@@ -272,6 +273,7 @@ ScoreSheet playSession(const PracticeCase& pc, const std::string& coil, const st
     if (!session.step()) break;
   }
   if (recordingOut) *recordingOut = session.recording();
+  if (atEnd) atEnd(session);
   return session.finish();
 }
 

@@ -9,6 +9,7 @@
 // command() and setView() from input handlers, step() once per simulation
 // step, read model()/state() to draw, and score() / recording() at the end.
 // Commands and views take effect at the next step().
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -78,6 +79,7 @@ class PracticeSession {
   const Deployment& deployment() const { return deployment_; }
   const DeploymentState& deploymentState() const { return ds_; }
   long steps() const { return steps_; }
+  const std::string& view() const { return view_; }  // the view looked through now
   double time() const { return double(steps_) * model_.timeStep; }
   const ScoreSheet& runningScore() const { return score_; }
 
@@ -128,6 +130,7 @@ SessionRecording parseSession(const nlohmann::json& document, const std::string&
 ScoreSheet playSession(const PracticeCase& practiceCase, const std::string& coil,
                        const std::vector<TimedCommand>& timeline,
                        const std::vector<std::pair<double, std::string>>& views, double end,
-                       nlohmann::ordered_json* recordingOut = nullptr, const ContactForceSource& contacts = {});
+                       nlohmann::ordered_json* recordingOut = nullptr, const ContactForceSource& contacts = {},
+                       const std::function<void(const PracticeSession&)>& atEnd = {});
 
 }  // namespace coilsim::planning

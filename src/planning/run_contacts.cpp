@@ -36,4 +36,19 @@ void setDrawnCatheterActive(const Deployment& dep, State& state, bool active) {
   state.rods[size_t(dep.catheterRod)].active = active;
 }
 
+void appendInactiveCatheter(const Model& model, const State& state, const Deployment& dep, DrawData& out) {
+  if (dep.flexible() || dep.catheterRod < 0) return;
+  const RodState& r = state.rods[size_t(dep.catheterRod)];
+  if (r.active) return;
+  const RodModel& rm = model.rods[size_t(dep.catheterRod)];
+  DrawTube t;
+  t.name = rm.name;
+  t.role = rm.role;
+  t.radius = rm.section.radius;
+  t.centre = r.x;
+  t.frames = r.q;
+  t.colours.assign(r.x.size(), defaultColour(rm.role));
+  out.tubes.push_back(std::move(t));
+}
+
 }  // namespace coilsim::planning

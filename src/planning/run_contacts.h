@@ -35,4 +35,8 @@ void addRunContacts(ModelDef& def, const Sac& sac);
 // and put it back for pictures. A flexible catheter is simulated and stays.
 void setDrawnCatheterActive(const Deployment& dep, State& state, bool active);
 
+// The drawn rigid catheter as a tube, for windows drawing a state where it is
+// inactive (nothing when it is active or flexible: then the state draws it).
+void appendInactiveCatheter(const Model& model, const State& state, const Deployment& dep, DrawData& out);
+
 }  // namespace coilsim::planning

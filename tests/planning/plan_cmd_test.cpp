@@ -148,11 +148,17 @@ TEST(PracticeCommand, ReplayWritesTheSameScoreSheet) {
   }
   const std::string c = kSource + "/scenes/cases/sphere-7mm-wide-neck.json";
   std::string log;
+  const bool ui = haveUi();
+  const std::string shot = ui ? " --screenshot " + (dir / "xray.png").string() : std::string();
   ASSERT_EQ(run("practice " + c + " --coil finishing-2x10 --view xray --input " + (dir / "timeline.json").string() +
-                    " --record " + (dir / "session.json").string() + " --out " + (dir / "score.json").string(),
+                    " --record " + (dir / "session.json").string() + shot + " --out " + (dir / "score.json").string(),
                 &log),
             0)
       << log;
+  // The last frame in the X-ray view, with the live read-outs in the panel.
+  if (ui) EXPECT_GT(fs::file_size(dir / "xray.png"), 1000u);
+  // Practice by hand is the window's: scripted inputs do not go with it.
+  EXPECT_EQ(run("practice " + c + " --window --input " + (dir / "timeline.json").string(), &log), 2);
   ASSERT_EQ(run("practice " + c + " --replay " + (dir / "session.json").string() + " --out " +
                     (dir / "replayed.json").string(),
                 &log),
