@@ -127,6 +127,33 @@ TEST(PlanCommand, SequenceKeepsEarlierCoilsAndMergeEqualsOneRun) {
   for (const fs::path& d : {one, a, b, merged}) fs::remove_all(d);
 }
 
+TEST(PlanCommand, ACoilThatMeetsResistanceEverywhereIsReportedNotPlaced) {
+  // A threshold of 1 uN: any load on the tip is "resistance". The operator twists three times,
+  // pulls back and re-advances three times, then gives the coil up instead of pushing for ever.
+  const fs::path out = fs::temp_directory_path() / "coilsim-plan-not-placed";
+  fs::remove_all(out);
+  std::string log;
+  ASSERT_EQ(run("plan " + kSource + "/scenes/cases/sphere-7mm-wide-neck.json --coils finishing-2x10 --speed 10 " +
+                    "--force-threshold 0.001 --no-screenshots --out " + out.string(),
+                &log),
+            0)
+      << "not placed is an outcome of the plan, not a failure\n" << log;
+  const auto c = readPlan(out)["coils"][0];
+  EXPECT_TRUE(c["ok"].get<bool>()) << c.dump();
+  EXPECT_FALSE(c["placed"].get<bool>()) << c.dump();
+  ASSERT_TRUE(c.contains("not_placed")) << c.dump();
+  EXPECT_NE(c["not_placed"].get<std::string>().find("does not fit"), std::string::npos) << c.dump();
+  EXPECT_EQ(c["pull_backs"].get<int>(), 3) << c.dump();
+  EXPECT_LT(c["deployed_mm"].get<double>(), 10.0);
+  // Given up by the operator, well before the time limit (60 s + 4 L / speed = 64 s) would stop it.
+  EXPECT_LT(c["simulated_s"].get<double>(), 30.0) << c.dump();
+  std::ifstream md(out / "plan.md");
+  std::stringstream text;
+  text << md.rdbuf();
+  EXPECT_NE(text.str().find("not placed: the coil does not fit"), std::string::npos) << text.str();
+  fs::remove_all(out);
+}
+
 TEST(PlanCommand, BadInputExitsTwoNamingTheProblem) {
   std::string log;
   EXPECT_EQ(run("plan " + kSource + "/scenes/cases/sphere-7mm-wide-neck.json --coils no-such-coil --out /tmp/x", &log), 2);
