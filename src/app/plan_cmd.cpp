@@ -29,7 +29,7 @@ using planning::PlanSetup;
 int usage(const std::string& message) {
   std::fprintf(stderr,
                "coilsim plan: %s\n"
-               "usage: coilsim plan SCENE|CASE --out DIR [--coils a,b,c] [--jobs N] [--sac FILE] [--catalogue DIR]\n"
+               "usage: coilsim plan SCENE|CASE... --out DIR [--coils a,b+c] [--jobs N] [--sac FILE] [--catalogue DIR]\n"
                "         [--speed MM_S] [--force-threshold MN] [--spacing MM] [--max-time S]\n"
                "         [--sensitivity SHIFT_MM,TILT_DEG] [--no-screenshots] [--size WxH]\n"
                "       coilsim plan-merge DIR... --out DIR\n"
@@ -53,6 +53,7 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 struct PlanArgs {
   std::string input, out, sac, catalogue, coils;
+  std::vector<std::string> inputs;  // several cases: one plan each, in DIR/<case name>/
   int jobs = 1;
   bool screenshots = true;
   int width = 960, height = 720;
@@ -114,13 +115,13 @@ std::string parseArgs(const std::vector<std::string>& args, PlanArgs& a) {
       a.width = int(w), a.height = int(h);
     } else if (!arg.empty() && arg[0] == '-') {
       return "unknown option \"" + arg + "\"";
-    } else if (a.input.empty()) {
-      a.input = arg;
     } else {
-      return "plan takes one scene or case file, got \"" + a.input + "\" and \"" + arg + "\"";
+      a.inputs.push_back(arg);
     }
   }
-  if (a.input.empty()) return "plan needs a scene or case file, e.g. coilsim plan scenes/cases/sphere-7mm.json";
+  if (a.inputs.empty()) return "plan needs a scene or case file, e.g. coilsim plan scenes/cases/sphere-7mm-wide-neck.json";
+  if (a.inputs.size() > 1 && !a.sac.empty()) return "--sac belongs to one scene: plan several case files, or one scene with --sac";
+  a.input = a.inputs.front();
   if (a.out.empty()) return "plan needs --out DIR";
   return "";
 }
@@ -134,7 +135,10 @@ bool screenshot(const PlanSetup& setup, const CandidateResult& r, const PlanArgs
   v.screenshotPath = path;
   v.drawPanel = false;
   const auto mesh = setup.sac.mesh;
-  v.addDrawData = [mesh](const Model&, const State&, DrawData& d) {
+  // Runs have the sac as a wall (drawn with the model's obstacles); a scene's own wall may be another mesh.
+  v.addDrawData = [mesh](const Model& model, const State&, DrawData& d) {
+    for (const Obstacle& o : model.obstacles)
+      if (o.mesh == mesh) return;
     DrawMesh m;
     m.name = mesh->name;
     m.vertices = mesh->vertices;
@@ -154,7 +158,7 @@ std::string fileSafe(std::string s) {
 int plan(const PlanArgs& a) {
   PlanSetup setup;
   setup.label = a.input;
-  std::vector<io::CoilSpec> chosen;
+  std::vector<std::vector<io::CoilSpec>> chosen;  // each a coil or a sequence
   const nlohmann::json doc = io::readJsonFile(a.input);
   const bool isCase = doc.is_object() && doc.value("format", std::string()) == planning::kCaseFormat;
   const std::vector<io::CoilSpec> catalogue =
@@ -165,7 +169,8 @@ int plan(const PlanArgs& a) {
     setup.sac = a.sac.empty() ? c.sac : planning::loadSac(a.sac);
     setup.spacingMm = c.spacingMm;
     setup.deploy.wallForceThreshold = c.goal.maxWallForce;
-    if (a.coils.empty()) chosen = c.coils;
+    if (a.coils.empty())
+      for (const io::CoilSpec& coil : c.coils) chosen.push_back({coil});
   } else {
     setup.scene = io::loadScene(a.input);
     if (!setup.scene.deployment)
@@ -174,7 +179,12 @@ int plan(const PlanArgs& a) {
       return usage(a.input + " is a scene: give the sac and neck plane with --sac FILE, or plan a case file (scenes/cases/*.json)");
     setup.sac = planning::loadSac(a.sac);
   }
-  for (const std::string& name : split(a.coils, ',')) chosen.push_back(io::findCoil(catalogue, name));
+  // "a,b": two candidates; "a+b": one sequence (a, then b into the same sac).
+  for (const std::string& item : split(a.coils, ',')) {
+    std::vector<io::CoilSpec> sequence;
+    for (const std::string& name : split(item, '+')) sequence.push_back(io::findCoil(catalogue, name));
+    if (!sequence.empty()) chosen.push_back(std::move(sequence));
+  }
   if (chosen.empty()) return usage("no coils to plan: give --coils a,b,c");
   if (a.spacingMm) setup.spacingMm = *a.spacingMm;
   if (a.speedMmS) setup.deploy.pushSpeed = units::mmPerSToMPerS(*a.speedMmS);
@@ -186,7 +196,7 @@ int plan(const PlanArgs& a) {
     return usage(a.input + ": " + e.what());
   }
   std::vector<Candidate> candidates;
-  for (const io::CoilSpec& c : chosen) {
+  for (const std::vector<io::CoilSpec>& c : chosen) {
     if (a.sensitivity) {
       for (Candidate& v : planning::sensitivityVariants(c, a.sensitivity->first, a.sensitivity->second))
         candidates.push_back(std::move(v));
@@ -225,11 +235,33 @@ int plan(const PlanArgs& a) {
 
 }  // namespace
 
+// Several case files (e.g. two phantoms): one plan each in DIR/<case file name>/,
+// and DIR/plan.md with every table. Returns the worst exit code.
+int plans(const PlanArgs& a) {
+  int worst = kExitOk;
+  std::string md = "# Coil plans\n\n";
+  for (const std::string& input : a.inputs) {
+    PlanArgs one = a;
+    one.input = input;
+    const std::string sub = fileSafe(std::filesystem::path(input).stem().string());
+    one.out = (std::filesystem::path(a.out) / sub).string();
+    const int code = plan(one);
+    if (code == kExitUsage) return code;
+    worst = std::max(worst, code);
+    nlohmann::ordered_json pj = nlohmann::ordered_json::parse(io::readJsonFile((std::filesystem::path(one.out) / "plan.json").string()).dump());
+    for (auto& c : pj["coils"])
+      if (c.contains("screenshot")) c["screenshot"] = sub + "/" + c["screenshot"].get<std::string>();
+    md += "#" + planning::planMarkdown(pj) + "\n";
+  }
+  io::writeFileAtomic((std::filesystem::path(a.out) / "plan.md").string(), md);
+  return worst;
+}
+
 int runPlan(const std::vector<std::string>& args) {
   PlanArgs a;
   if (const std::string err = parseArgs(args, a); !err.empty()) return usage(err);
   try {
-    return plan(a);
+    return a.inputs.size() > 1 ? plans(a) : plan(a);
   } catch (const io::InputError& e) {
     std::fprintf(stderr, "coilsim plan: %s\n", e.what());
     return kExitUsage;

@@ -10,7 +10,12 @@
 #include "io/json_writer.h"
 #include "io/timeline.h"
 #include "planning/case_file.h"
+#include "planning/live_readouts.h"
 #include "planning/practice.h"
+#include "planning/run_contacts.h"
+#ifdef COILSIM_HAVE_UI
+#include "ui/viewer.h"
+#endif
 
 namespace coilsim::app {
 namespace {
@@ -19,17 +24,40 @@ int usage(const std::string& message) {
   std::fprintf(stderr,
                "coilsim practice: %s\n"
                "usage: coilsim practice CASE --coil NAME --input TIMELINE [--view 3d|xray|biplane] [--duration S]\n"
-               "                        [--record SESSION] --out SCORE\n"
-               "       coilsim practice CASE --replay SESSION --out SCORE\n"
+               "                        [--record SESSION] [--screenshot PNG] --out SCORE\n"
+               "       coilsim practice CASE --replay SESSION [--screenshot PNG] --out SCORE\n"
+               "       coilsim practice CASE --window [--coil NAME] [--view 3d|xray|biplane]\n"
                "(docs/planning.md)\n",
                message.c_str());
   return kExitUsage;
 }
 
+#ifdef COILSIM_HAVE_UI
+// The window (or an off-screen picture) of a practice session's model and
+// state, with the live read-outs: packing, protrusion and wall-force warnings.
+ui::ViewerOptions practiceViewer(const planning::PracticeCase& pc, const planning::PracticeSession& session,
+                                 const std::string& view) {
+  ui::ViewerOptions v;
+  v.scenePath = pc.name + " - " + session.runningScore().coil;
+  v.view = view;
+  const Deployment dep = session.deployment();
+  v.addDrawData = [dep](const Model& m, const State& s, DrawData& d) { planning::appendInactiveCatheter(m, s, dep, d); };
+  auto live = std::make_shared<planning::LiveReadouts>(pc, dep);
+  v.readouts.title = "Practice: " + pc.name;
+  v.readouts.compute = [live](const Model& m, const State& s) {
+    std::vector<ui::Readout> out;
+    for (const planning::LiveLine& l : live->lines(m, s)) out.push_back({l.label, l.value, l.warning});
+    return out;
+  };
+  return v;
+}
+#endif
+
 }  // namespace
 
 int runPractice(const std::vector<std::string>& args) {
-  std::string casePath, coil, input, view = "3d", record, replay, out;
+  std::string casePath, coil, input, view = "3d", record, replay, out, screenshot;
+  bool window = false;
   double duration = 0;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -43,6 +71,10 @@ int runPractice(const std::vector<std::string>& args) {
       if (!value(coil)) return usage("--coil needs a coil name of the case's set");
     } else if (a == "--input") {
       if (!value(input)) return usage("--input needs a timeline file (coilsim-timeline/1)");
+    } else if (a == "--window") {
+      window = true;
+    } else if (a == "--screenshot") {
+      if (!value(screenshot)) return usage("--screenshot needs a PNG file name");
     } else if (a == "--view") {
       if (!value(view) || (view != "3d" && view != "xray" && view != "biplane"))
         return usage("--view needs 3d, xray or biplane, got \"" + view + "\"");
@@ -66,16 +98,47 @@ int runPractice(const std::vector<std::string>& args) {
     }
   }
   if (casePath.empty()) return usage("practice needs a case file, e.g. scenes/cases/sphere-7mm.json");
-  if (out.empty()) return usage("practice needs --out SCORE");
-  if (replay.empty() == input.empty()) return usage("give either --input TIMELINE (play) or --replay SESSION");
+#ifndef COILSIM_HAVE_UI
+  if (window || !screenshot.empty()) return usage("this build has no window or screenshots (no ui layer)");
+#endif
+  if (window) {
+    if (!input.empty() || !replay.empty() || !record.empty() || !out.empty() || !screenshot.empty())
+      return usage("--window practises by hand: drop --input, --replay, --record, --out and --screenshot");
+  } else if (out.empty()) {
+    return usage("practice needs --out SCORE (or --window)");
+  }
+  if (!window && replay.empty() == input.empty()) return usage("give either --input TIMELINE (play) or --replay SESSION");
   if (!replay.empty() && (!coil.empty() || !record.empty() || duration > 0 || view != "3d"))
     return usage("--replay takes the coil, views and duration from the session; drop --coil, --record, --view, --duration");
   try {
     const planning::PracticeCase pc = planning::loadCase(casePath);
+#ifdef COILSIM_HAVE_UI
+    if (window) {
+      // By hand in the window, with the live read-outs. The window steps its own copy of the
+      // model with its own device controls: no score sheet here (scripted sessions give one).
+      const planning::PracticeSession session(pc, coil.empty() ? pc.coils.front().name : coil);
+      Model model = session.model();
+      State state = session.state();
+      ui::ViewerOptions v = practiceViewer(pc, session, view);
+      v.deployment = ui::DeploymentSetup{session.deployment(), session.deploymentState(), {}};
+      return ui::runWindow(model, state, v);
+    }
+    // The last frame of a scripted session, in its last view, with the read-outs.
+    std::string shotError;
+    auto picture = [&](const planning::PracticeSession& s) {
+      if (screenshot.empty()) return;
+      ui::ViewerOptions v = practiceViewer(pc, s, s.view());
+      v.deployment = ui::DeploymentSetup{s.deployment(), s.deploymentState(), {}};
+      v.screenshotPath = screenshot;
+      if (!ui::renderOffscreen(s.model(), s.state(), v, shotError)) std::fprintf(stderr, "coilsim practice: %s\n", shotError.c_str());
+    };
+#else
+    const std::function<void(const planning::PracticeSession&)> picture;
+#endif
     planning::ScoreSheet score;
     if (!replay.empty()) {
       const planning::SessionRecording s = planning::loadSession(replay);
-      score = planning::playSession(pc, s.coil, s.timeline, s.views, s.end);
+      score = planning::playSession(pc, s.coil, s.timeline, s.views, s.end, nullptr, {}, picture);
     } else {
       if (coil.empty()) coil = pc.coils.front().name;
       const std::vector<TimedCommand> timeline = io::loadTimeline(input);
@@ -84,7 +147,7 @@ int runPractice(const std::vector<std::string>& args) {
       std::vector<std::pair<double, std::string>> views;
       if (view != "3d") views.emplace_back(0.0, view);
       nlohmann::ordered_json recording;
-      score = planning::playSession(pc, coil, timeline, views, duration, &recording);
+      score = planning::playSession(pc, coil, timeline, views, duration, &recording, {}, picture);
       if (!record.empty()) io::writeFileAtomic(record, io::formatJson(recording));
     }
     const std::string text = io::formatJson(planning::scoreJson(score));

@@ -1,13 +1,35 @@
-// The automatic operator: push, stop-and-twist on resistance, settle, detach.
+// The automatic operator: push in strokes, feel, twist or pull back on
+// resistance, settle, detach; give up honestly when the coil does not fit.
 #include "planning/auto_deploy.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
 #include "physics/beam.h"
 #include "physics/integrator.h"
 
 namespace coilsim::planning {
+namespace {
+
+std::string mmText(double m) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f mm", m * 1e3);
+  return b;
+}
+std::string mNText(double n) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2f mN", n * 1e3);
+  return b;
+}
+std::string sText(double s) {
+  char b[32];
+  std::snprintf(b, sizeof b, "t = %.3f s", s);
+  return b;
+}
+
+}  // namespace
 
 Vec3 tipForce(const Deployment& dep, const State& state) {
   const RodState& chain = state.rods[size_t(dep.chainRod)];
@@ -20,78 +42,147 @@ Vec3 tipForce(const Deployment& dep, const State& state) {
   return e.forceA.head<3>();
 }
 
+bool FeltTipForce::add(const Deployment& dep, const State& state, bool still, double dt) {
+  if (!still) {
+    stillTime_ = 0;
+    return false;
+  }
+  stillTime_ += dt;
+  if (stillTime_ < 0.5 * window_) return false;
+  const Vec3 f = tipForce(dep, state);
+  // Axial part along the first coil beam out of the tip: what the pusher feels.
+  const RodState& chain = state.rods[size_t(dep.chainRod)];
+  const size_t t = size_t(dep.tipNode);
+  const double ax = chain.activeNodes > int(t) + 1 ? -f.dot((chain.x[t + 1] - chain.x[t]).normalized()) : 0.0;
+  if (stillTime_ < 0.5 * window_ + 0.5 * dt) {
+    felt = f.norm(), axial = ax;  // first sample of this rest
+  } else {
+    const double a = std::min(1.0, dt / (0.25 * window_));
+    felt += a * (f.norm() - felt);
+    axial += a * (ax - axial);
+  }
+  return stillTime_ >= window_ - 0.5 * dt;
+}
+
 AutoDeployResult autoDeploy(const Deployment& dep, const Model& model, State& state, DeploymentState& ds,
                             const AutoDeployOptions& o, const ContactForceSource& contacts) {
+  using Kind = DeviceCommand::Kind;
   AutoDeployResult r;
   DeploymentController controller;
   const double dt = model.timeStep;
+  const double probe = 0.02;  // s the pusher rests to feel the resistance
+  FeltTipForce feel(probe);
   std::vector<std::vector<double>> forces;
-  enum class Phase { Push, Twist, Pause, Settle, After } phase = Phase::Push;
-  double phaseEnd = 0, twistSign = 1;
+  enum class Phase { Stroke, Feel, Twist, Pause, PullBack, Settle, After } phase = Phase::Feel;
+  double phaseEnd = 0, twistSign = 1, detachTime = 0;
+  std::unique_ptr<Model> fineModel;
+  int twistsHere = 0, pullBacksHere = 0;
+  double progressMark = ds.deployed;  // deployed length at the last pull-back reset
   auto issue = [&](double t, const DeviceCommand& c) {
     const std::string why = controller.command(dep, ds, c);
-    if (!why.empty()) r.log.push_back("t = " + std::to_string(t) + " s: refused: " + why);
+    if (!why.empty()) r.log.push_back(sText(t) + ": " + why);
     else r.timeline.push_back({t, c});
+    return why.empty();
   };
-  const long maxSteps = long(std::ceil(o.maxTime / dt));
+  auto stroke = [&](double t) {
+    const double left = dep.coilLength - ds.deployed;
+    issue(t, {Kind::Push, o.pushSpeed, std::min(o.stroke, left)});
+    phase = Phase::Stroke;
+  };
+  const double maxTime = o.maxTime > 0 ? o.maxTime : 60 + 4 * dep.coilLength / o.pushSpeed;
+  const long maxSteps = long(std::ceil(maxTime / dt));
   for (long s = 0; s < maxSteps; ++s) {
     const double t = double(s) * dt;  // exactly the time runTimeline applies commands at
     const bool fullyOut = ds.deployed >= dep.coilLength - 1e-12;
-    if (phase == Phase::Push && s == 0) issue(t, {DeviceCommand::Kind::Push, o.pushSpeed, 0});
-    if (phase == Phase::Push && fullyOut) {
+    if (phase == Phase::Stroke && !controller.moving()) {
+      phase = Phase::Feel;
+    } else if (phase == Phase::Feel && fullyOut && !ds.detached) {
       phase = Phase::Settle, phaseEnd = t + o.settle;
-    } else if (phase == Phase::Push && s > 0) {
-      const Vec3 f = tipForce(dep, state);
-      if (f.norm() > o.forceThreshold) {
-        issue(t, {DeviceCommand::Kind::Stop, 0, 0});
-        issue(t, {DeviceCommand::Kind::Twist, twistSign * o.twistRate, o.twistAngle});
-        twistSign = -twistSign;
-        ++r.corrections;
-        phase = Phase::Twist, phaseEnd = t + o.twistAngle / o.twistRate;
-      }
     } else if (phase == Phase::Twist && t >= phaseEnd - 1e-12) {
       phase = Phase::Pause, phaseEnd = t + o.pause;
     } else if (phase == Phase::Pause && t >= phaseEnd - 1e-12) {
-      issue(t, {DeviceCommand::Kind::Push, o.pushSpeed, 0});
-      phase = Phase::Push;
+      phase = Phase::Feel;
+    } else if (phase == Phase::PullBack && !controller.moving()) {
+      phase = Phase::Feel;
     } else if (phase == Phase::Settle && t >= phaseEnd - 1e-12) {
-      issue(t, {DeviceCommand::Kind::Detach, 0, 0});
+      issue(t, {Kind::Detach, 0, 0});
       phase = Phase::After, phaseEnd = t + o.afterDetach;
+      detachTime = t;
     } else if (phase == Phase::After && t >= phaseEnd - 1e-12) {
       r.time = t;
+      r.placed = ds.detached;
+      r.deployed = ds.deployed;
       return r;
     }
+    const double before = ds.deployed, twistBefore = ds.twist;
     controller.advance(dep, model, state, ds, dt);
-    for (const std::string& n : controller.notes) r.log.push_back("t = " + std::to_string(t) + " s: " + n);
+    for (const std::string& n : controller.notes) r.log.push_back(sText(t) + ": " + n);
     controller.notes.clear();
-    const StepReport rep = step(model, state);
+    const bool pusherMoved = ds.deployed != before || ds.twist != twistBefore;  // pushed, pulled or twisted
+    // The steps after detach in substeps (kDetachSubsteps): without them, an axial-strain blow-up at detach.
+    const bool fine = ds.detached && phase == Phase::After && t < detachTime + kDetachFineSteps * dt - 0.5 * dt;
+    if (fine && !fineModel) {
+      fineModel = std::make_unique<Model>(model);
+      fineModel->timeStep = dt / kDetachSubsteps;
+    }
+    StepReport rep;
+    for (int k = 0; k < (fine ? kDetachSubsteps : 1) && rep.ok(); ++k) rep = step(fine ? *fineModel : model, state);
     ++r.steps;
     if (!rep.ok()) {
       r.ok = false;
-      r.error = "step refused at t = " + std::to_string(t) + " s: " + rep.message;
-      r.time = t;
+      r.error = "step refused at " + sText(t) + ": " + rep.message;
+      r.time = t, r.deployed = ds.deployed;
       return r;
-    }
-    if (!ds.detached) {
-      const Vec3 f = tipForce(dep, state);
-      r.maxTipForce = std::max(r.maxTipForce, f.norm());
-      // Axial part along the first coil beam out of the tip: what the pusher feels.
-      const RodState& chain = state.rods[size_t(dep.chainRod)];
-      const size_t t = size_t(dep.tipNode);
-      if (chain.activeNodes > int(t) + 1) {
-        const Vec3 axis = (chain.x[t + 1] - chain.x[t]).normalized();
-        r.maxDeploymentForce = std::max(r.maxDeploymentForce, -f.dot(axis));
-      }
     }
     r.maxKickback = std::max(r.maxKickback, catheterTip(dep, state, ds).kickback);
     if (contacts && contacts(model, state, forces)) {
       r.wallForcesAvailable = true;
       r.wall.add(forces, dt, o.wallForceThreshold);
     }
+    if (ds.detached) continue;
+    const bool felt = feel.add(dep, state, !pusherMoved, dt);
+    if (felt) {
+      r.maxTipForce = std::max(r.maxTipForce, feel.felt);
+      r.maxDeploymentForce = std::max(r.maxDeploymentForce, feel.axial);
+    }
+    if (phase != Phase::Feel || !felt) continue;
+    // The operator's decision, on the resistance felt at rest.
+    const double tNext = double(s + 1) * dt;
+    if (ds.deployed >= dep.coilLength - 1e-12) continue;  // next step: settle
+    if (ds.deployed > progressMark + 0.5 * o.stroke) progressMark = ds.deployed, pullBacksHere = 0;
+    if (feel.felt <= o.forceThreshold) {
+      twistsHere = 0;
+      stroke(tNext);
+    } else if (twistsHere < o.maxTwists) {
+      issue(tNext, {Kind::Twist, twistSign * o.twistRate, o.twistAngle});
+      twistSign = -twistSign;
+      ++twistsHere, ++r.corrections;
+      phase = Phase::Twist, phaseEnd = tNext + o.twistAngle / o.twistRate;
+    } else if (feel.felt <= o.hardLimitFactor * o.forceThreshold) {
+      r.log.push_back(sText(tNext) + ": pushing on through " + mNText(feel.felt) + " at " + mmText(ds.deployed));
+      twistsHere = 0;
+      stroke(tNext);
+    } else if (pullBacksHere < o.maxPullBacks && ds.deployed > 0) {
+      r.log.push_back(sText(tNext) + ": " + mNText(feel.felt) + " at " + mmText(ds.deployed) + ": pulling back");
+      issue(tNext, {Kind::Pull, o.pushSpeed, std::min(o.pullBack, ds.deployed)});
+      ++pullBacksHere, ++r.pullBacks;
+      twistsHere = 0;
+      phase = Phase::PullBack;
+    } else {
+      r.time = tNext;
+      r.deployed = ds.deployed;
+      r.notPlaced = "the coil does not fit: the tip force stays at " + mNText(feel.felt) + " (limit " +
+                    mNText(o.hardLimitFactor * o.forceThreshold) + ") after " + std::to_string(o.maxTwists) +
+                    " twists and " + std::to_string(o.maxPullBacks) + " pull-backs, with " + mmText(ds.deployed) +
+                    " of " + mmText(dep.coilLength) + " out";
+      return r;
+    }
   }
   r.ok = false;
-  r.time = o.maxTime;
-  r.error = "the coil was not detached within " + std::to_string(o.maxTime) + " s of simulated time";
+  r.time = maxTime;
+  r.deployed = ds.deployed;
+  r.error = "the coil was not detached within " + std::to_string(maxTime) + " s of simulated time (" +
+            mmText(ds.deployed) + " of " + mmText(dep.coilLength) + " out)";
   return r;
 }
 

@@ -1,12 +1,15 @@
 #pragma once
-// A coil deployed the way a clinician pushes it, headless: push at a set
-// speed; when the force at the catheter tip rises above a threshold, stop,
-// twist a little (alternating sides) and pause so the loops can find room,
-// then push on; when the coil is fully out, let it settle and detach. The
-// commands it gives are kept as a timeline, so `coilsim run --input` can
-// replay the same deployment. Measures, step by step, the tip (deployment)
-// force, the catheter kickback and the wall forces, and at the end the sac
-// metrics.
+// A coil deployed the way a clinician pushes it, headless: push a short
+// stroke at a set speed, stop and feel the resistance; when the force at the
+// catheter tip is above a threshold, twist a little (alternating sides) and
+// let the loops find room; if it stays high, push on through moderate
+// resistance, and pull back a little to re-advance when it is high; when
+// the coil is fully out, let it settle and detach. A coil that still meets a
+// high resistance after the pull-backs is reported as not placed (it does
+// not fit), never pushed on for ever. The commands it gives are kept as a
+// timeline, so `coilsim run --input` can replay the same deployment.
+// Measures the felt tip (deployment) force, the catheter kickback and the
+// wall forces, and at the end the sac metrics.
 #include <functional>
 #include <string>
 #include <vector>
@@ -21,40 +24,76 @@ namespace coilsim::planning {
 
 struct AutoDeployOptions {
   double pushSpeed = 5e-3;       // m/s (clinical: 1-10 mm/s)
-  double forceThreshold = 5e-3;  // N at the tip that makes the operator stop and twist
+  double stroke = 1e-3;          // m pushed between two feels of the resistance
+  double forceThreshold = 5e-3;  // N felt at the tip that makes the operator stop and twist
+  double hardLimitFactor = 3;    // above forceThreshold times this, pull back instead of pushing on
+  int maxTwists = 3;             // corrections at one place before pushing on (or pulling back)
+  int maxPullBacks = 3;          // pull-backs without progress before the coil is given up
+  double pullBack = 2e-3;        // m pulled back to re-advance
   double twistAngle = M_PI / 6;  // rad per correction
   double twistRate = M_PI;       // rad/s
-  double pause = 0.2;            // s of rest after a twist before pushing on
+  double pause = 0.2;            // s of rest after a twist before feeling again
   double settle = 0.5;           // s after full deployment before detach
   double afterDetach = 0.2;      // s simulated after detach
-  double maxTime = 600;          // s: give up (reported) beyond this
+  double maxTime = 0;            // s: give up (reported) beyond this; 0: 60 s + 4 L / pushSpeed
   double wallForceThreshold = 0.05;  // N: wall load counted as "above the safety threshold"
 };
 
 // Per-node wall (contact) force magnitudes of every rod, N, or false when
 // there are none to read (no wall contact in the scene): then wall forces
 // are reported as unavailable, never as zero.
-using ContactForceSource = std::function<bool(const Model&, const State&, std::vector<std::vector<double>>&)>;
+using ContactForceSource = std::function<bool(const Model& , const State&, std::vector<std::vector<double>>&)>;
 
 struct AutoDeployResult {
   bool ok = true;              // false: a step was refused (blow-up) or maxTime passed
-  std::string error;
+  bool placed = false;         // the coil was pushed out fully and detached
+  std::string error;           // why not ok
+  std::string notPlaced;       // why the operator gave the coil up (ok, but not placed)
   double time = 0;             // s simulated
   long steps = 0;
-  double maxTipForce = 0;      // N, largest elastic force of the coil on the catheter tip
-  double maxDeploymentForce = 0;  // N, largest axial (push) component of it
+  double deployed = 0;         // m out of the catheter at the end
+  double maxTipForce = 0;      // N, largest felt force of the coil on the catheter tip
+  double maxDeploymentForce = 0;  // N, largest felt axial (push) component of it
   double maxKickback = 0;      // m the catheter tip moved back along its axis
   int corrections = 0;         // stop-and-twist manoeuvres
+  int pullBacks = 0;           // repositionings (pull back, re-advance)
   bool wallForcesAvailable = false;
   WallForceStats wall;
   std::vector<TimedCommand> timeline;  // what was commanded, replayable
   std::vector<std::string> log;
 };
 
+// The steps just after detach are taken in substeps: detach frees a clamped
+// end that carries the coil's bending moment, and its light node turns
+// further than one linearised implicit step follows.
+inline constexpr int kDetachFineSteps = 10, kDetachSubsteps = 20;
+
 // Tip force of a deployment now: the elastic force of the first beam outside the catheter on the tip node.
 Vec3 tipForce(const Deployment& dep, const State& state);
 
-// Runs the deployment from the state's current configuration to detach.
+// The tip force as a hand feels it. While the coil slides, the tip beam's
+// force is dominated by the sliding itself (the partial beam at the tip
+// changes its rest length every step and a node is inserted every spacing,
+// giving spikes of up to newtons that last a step or two); a clinician
+// feels the resistance when the pusher rests. So the felt force is the tip
+// force averaged over `window` s once the pusher has not moved for `window` s.
+class FeltTipForce {
+ public:
+  explicit FeltTipForce(double window = 0.02) : window_(window) {}
+  // One step, after it was taken: `still` when the pusher did not move
+  // (push, pull or twist) during it. Returns true when a felt value is available: the pusher has
+  // rested `window` s; `felt` and `axial` (N) then follow the tip force with
+  // a time constant of window / 4, started window / 2 into the rest (past
+  // the decay of the sliding transients).
+  bool add(const Deployment& dep, const State& state, bool still, double dt);
+  double felt = 0, axial = 0;
+
+ private:
+  double window_, stillTime_ = 0;
+};
+
+// Runs the deployment from the state's current configuration to detach (or
+// until the operator gives up, or maxTime).
 AutoDeployResult autoDeploy(const Deployment& dep, const Model& model, State& state, DeploymentState& ds,
                             const AutoDeployOptions& options, const ContactForceSource& contacts = {});
 

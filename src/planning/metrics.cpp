@@ -16,6 +16,7 @@ CoilLines coilLines(const Model& model, const State& state, int chainRod, int sk
     if (rs.activeNodes - first < 2) continue;
     out.lines.emplace_back(rs.x.begin() + first, rs.x.begin() + rs.activeNodes);
     out.radius = std::max(out.radius, model.rods[r].section.radius);
+    out.radii.push_back(model.rods[r].section.radius);
   }
   return out;
 }
@@ -90,13 +91,20 @@ SacMetrics measureSac(const Sac& sac, double sacVolume, const NeckGrid& neck, co
                       const MetricOptions& options) {
   SacMetrics s;
   s.sacVolume = sacVolume;
-  const double r = coil.radius;
-  // Pieces of coil near the neck, projected onto the plane, for coverage.
-  std::vector<std::pair<Vec3, Vec3>> nearNeck;
-  for (const auto& line : coil.lines)
+  // Pieces of coil near the neck, projected onto the plane, with their radius, for coverage.
+  struct Piece {
+    Vec3 p, q;
+    double r;
+  };
+  std::vector<Piece> nearNeck;
+  for (size_t k = 0; k < coil.lines.size(); ++k) {
+    const auto& line = coil.lines[k];
+    const double r = coil.radiusOf(k);
     for (size_t i = 0; i + 1 < line.size(); ++i) {
       const Vec3 &a = line[i], &b = line[i + 1];
-      s.coilLengthInSac += lengthInSac(sac, a, b);
+      const double inSac = lengthInSac(sac, a, b);
+      s.coilLengthInSac += inSac;
+      s.coilVolume += M_PI * r * r * inSac;
       s.protrudingLength += lengthBeyondNeck(sac, a, b);
       const double da = sac.neck.signedDistance(a), db = sac.neck.signedDistance(b);
       for (const double d : {da, db})
@@ -117,18 +125,18 @@ SacMetrics measureSac(const Sac& sac, double sacVolume, const NeckGrid& neck, co
       Vec3 p = a + t0 * (b - a), q = a + t1 * (b - a);
       p -= sac.neck.signedDistance(p) * n;
       q -= sac.neck.signedDistance(q) * n;
-      nearNeck.emplace_back(p, q);
+      nearNeck.push_back({p, q, r});
     }
+  }
   // Depth only counts where the coil is in the vessel, not outside the surface.
   if (s.protrudingLength == 0) s.maxProtrusionDepth = 0;
-  s.coilVolume = M_PI * r * r * s.coilLengthInSac;
   s.packingDensity = sacVolume > 0 ? s.coilVolume / sacVolume : 0.0;
   s.protruding = s.protrudingLength > options.protrusionLength;
   if (!neck.cells.empty()) {
     long covered = 0;
     for (const Vec3& c : neck.cells)
-      for (const auto& [p, q] : nearNeck)
-        if (pointSegment(c, p, q) <= r) {
+      for (const Piece& piece : nearNeck)
+        if (pointSegment(c, piece.p, piece.q) <= piece.r) {
           ++covered;
           break;
         }
@@ -151,16 +159,26 @@ std::string occlusionClassName(int cls) {
 }
 
 void WallForceStats::add(const std::vector<std::vector<double>>& nodeForces, double dt, double threshold) {
-  bool above = false;
+  double stepMax = 0;
   for (const auto& rod : nodeForces)
     for (const double m : rod) {
       if (m <= 0) continue;
-      max = std::max(max, m);
+      stepMax = std::max(stepMax, m);
       sum += m;
       ++samples;
-      above = above || m > threshold;
     }
-  if (above) timeAbove += dt;
+  peak = std::max(peak, stepMax);
+  const size_t k = size_t(std::max(1, sustainSteps));
+  if (recent_.size() < k) {
+    recent_.push_back(stepMax);
+    if (recent_.size() < k) return;
+  } else {
+    recent_[next_] = stepMax;
+    next_ = (next_ + 1) % k;
+  }
+  const double sustained = *std::min_element(recent_.begin(), recent_.end());
+  max = std::max(max, sustained);
+  if (sustained > threshold) timeAbove += dt;
 }
 
 }  // namespace coilsim::planning

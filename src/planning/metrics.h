@@ -16,12 +16,16 @@ namespace coilsim::planning {
 // Coil centre lines as metrics read them: one polyline per coil rod.
 struct CoilLines {
   std::vector<std::vector<Vec3>> lines;  // m
-  double radius = 0;                     // primary coil outer radius, m
+  double radius = 0;                     // primary coil outer radius, m (the largest, when radii differ)
+  std::vector<double> radii;             // per line, m (a sequence of coils of different primary
+                                         // diameters); empty: every line has `radius`
+  double radiusOf(size_t line) const { return line < radii.size() ? radii[line] : radius; }
 };
 
 // The active nodes of every coil-role rod of `model`. A deployment chain
-// starts with catheter nodes (0..Deployment::tipNode, the tip included),
-// which are not coil: the first `skipNodes` nodes of rod `chainRod` are left out.
+// starts with catheter nodes (0..Deployment::tipNode); the coil leaves the
+// catheter at the tip node, so its line starts there: pass skipNodes =
+// tipNode to leave out the nodes before it (0 for the rigid tip).
 CoilLines coilLines(const Model& model, const State& state, int chainRod = -1, int skipNodes = 0);
 
 // The neck opening sampled once: centres of square cells of the neck plane
@@ -70,14 +74,26 @@ int occlusionClass(double packingDensity, double neckCoverage);
 std::string occlusionClassName(int cls);
 
 // Running statistics of per-node wall (contact) force magnitudes over time.
+// A wall load counts when it lasts: the penalty contact can chatter at a
+// light node (the coil's distal tip) with a force that is there one step in
+// two to four; a vessel wall feels the load that persists. So `max` and
+// `timeAbove` use the largest node force that every one of the last
+// `sustainSteps` steps reached (the sustained load); `peak` keeps the
+// largest single-step value for reference.
 struct WallForceStats {
-  double max = 0;         // N, largest node force seen
+  int sustainSteps = 5;   // steps (5 ms at the usual 1 ms step) a load must last
+  double max = 0;         // N, largest sustained load
+  double peak = 0;        // N, largest node force in any single step
   double sum = 0;         // N, summed over samples of contacting nodes
   long samples = 0;       // contacting node samples
-  double timeAbove = 0;   // s with some node above the threshold
+  double timeAbove = 0;   // s with the sustained load above the threshold
   double mean() const { return samples ? sum / double(samples) : 0.0; }
   // Adds one step's per-node force magnitudes (nodes with f > 0 are in contact).
   void add(const std::vector<std::vector<double>>& nodeForces, double dt, double threshold);
+
+ private:
+  std::vector<double> recent_;  // the largest node force of each of the last sustainSteps steps
+  size_t next_ = 0;
 };
 
 }  // namespace coilsim::planning

@@ -1,6 +1,7 @@
 // Candidate runs, threads, plan.json / plan.md, merging.
 #include "planning/plan.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -13,11 +14,14 @@
 #include "io/units.h"
 #include "physics/deployment.h"
 #include "planning/contact_forces.h"
+#include "planning/run_contacts.h"
 
 namespace coilsim::planning {
 namespace {
 
 using nlohmann::ordered_json;
+
+constexpr double kPictureCatheterMm = 4;  // drawn length of the rigid catheter in plan pictures
 
 // Edge units of plan reports, through units.h where it has them.
 double mm(double m) { return units::mToMm(m); }
@@ -47,28 +51,109 @@ void prepareSac(PlanSetup& setup) {
   setup.neck = sampleNeck(setup.sac);
 }
 
+std::string Candidate::name() const {
+  std::string n;
+  for (const io::CoilSpec& c : coils) n += (n.empty() ? "" : " + ") + c.name;
+  return n;
+}
+
+namespace {
+
+// A coil of a sequence already placed: its rod as the model defines it and its pose now.
+struct PlacedCoil {
+  RodDef def;
+  RodState pose;
+};
+
+// Folds one coil's deployment into the sequence's.
+void accumulate(AutoDeployResult& total, AutoDeployResult&& one) {
+  total.ok = one.ok;
+  total.placed = one.placed;
+  total.error = one.error;
+  total.notPlaced = one.notPlaced;
+  total.time += one.time;
+  total.steps += one.steps;
+  total.deployed = one.deployed;
+  total.maxTipForce = std::max(total.maxTipForce, one.maxTipForce);
+  total.maxDeploymentForce = std::max(total.maxDeploymentForce, one.maxDeploymentForce);
+  total.maxKickback = std::max(total.maxKickback, one.maxKickback);
+  total.corrections += one.corrections;
+  total.pullBacks += one.pullBacks;
+  total.wallForcesAvailable = total.wallForcesAvailable || one.wallForcesAvailable;
+  WallForceStats& w = total.wall;
+  w.max = std::max(w.max, one.wall.max);
+  w.peak = std::max(w.peak, one.wall.peak);
+  w.sum += one.wall.sum;
+  w.samples += one.wall.samples;
+  w.timeAbove += one.wall.timeAbove;
+  for (const TimedCommand& c : one.timeline) total.timeline.push_back({c.time, c.command});
+  for (std::string& l : one.log) total.log.push_back(std::move(l));
+}
+
+}  // namespace
+
 CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const ContactForceSource& contacts) {
   CandidateResult r;
-  r.name = c.coil.name;
+  r.name = c.name();
   r.variant = c.variant;
+  r.deploy.placed = false;
   const auto start = std::chrono::steady_clock::now();
   try {
-    io::SceneSpec spec = setup.scene;
-    if (!spec.deployment) throw std::invalid_argument(setup.label + " has no \"deployment\" block");
-    io::DeploymentSpec& dep = *spec.deployment;
-    io::applyCoil(c.coil, setup.spacingMm, dep);
-    dep.initialDeployedMm = std::min(dep.initialDeployedMm, 0.5 * dep.lengthMm);
-    dep.catheter.tipPositionMm += c.tipShiftMm;
-    if (c.tipTiltDeg != 0)
-      dep.catheter.direction = rotate(dep.catheter.direction.normalized(), dep.catheter.referenceNormal.normalized(),
-                                      units::degToRad(c.tipTiltDeg));
-    io::CompiledScene compiled = io::compileSceneWithDeployment(spec);
-    r.model = compileModel(compiled.model);
-    r.state = makeState(r.model);
-    const Deployment& d = *compiled.deployment;
-    DeploymentState ds = initDeployment(d, r.model, r.state, compiled.initialDeployed, compiled.initialTwist);
-    r.deploy = autoDeploy(d, r.model, r.state, ds, setup.deploy, contacts ? contacts : ContactForceSource(wallContactForces));
-    r.sac = measureSac(setup.sac, setup.sacVolume, setup.neck, coilLines(r.model, r.state, d.chainRod, d.tipNode + 1), setup.metrics);
+    if (c.coils.empty()) throw std::invalid_argument("a candidate without coils");
+    std::vector<PlacedCoil> placed;
+    int chainRod = -1, catheterNodes = 0;  // of the last deployment: chain nodes before its tip are catheter
+    for (size_t k = 0; k < c.coils.size(); ++k) {
+      const io::CoilSpec& coil = c.coils[k];
+      io::SceneSpec spec = setup.scene;
+      if (!spec.deployment) throw std::invalid_argument(setup.label + " has no \"deployment\" block");
+      io::DeploymentSpec& dep = *spec.deployment;
+      io::applyCoil(coil, setup.spacingMm, dep);
+      dep.initialDeployedMm = std::min(dep.initialDeployedMm, 0.5 * dep.lengthMm);
+      dep.catheter.tipPositionMm += c.tipShiftMm;
+      // The rigid catheter is only drawn (setDrawnCatheterActive): a short stub lets the picture frame the sac.
+      dep.catheter.drawLengthMm = std::min(dep.catheter.drawLengthMm, kPictureCatheterMm);
+      if (c.tipTiltDeg != 0)
+        dep.catheter.direction = rotate(dep.catheter.direction.normalized(), dep.catheter.referenceNormal.normalized(),
+                                        units::degToRad(c.tipTiltDeg));
+      io::CompiledScene compiled = io::compileSceneWithDeployment(spec);
+      // Coils placed before, after every rod of the scene and deployment, so their indices hold.
+      const size_t firstPlaced = compiled.model.rods.size();
+      for (const PlacedCoil& p : placed) compiled.model.rods.push_back(p.def);
+      addRunContacts(compiled.model, setup.sac);
+      r.model = compileModel(compiled.model);
+      r.state = makeState(r.model);
+      for (size_t i = 0; i < placed.size(); ++i) {
+        RodState& s = r.state.rods[firstPlaced + i];
+        const RodState& p = placed[i].pose;
+        s.active = true;
+        s.activeNodes = p.activeNodes;
+        s.beams = p.beams, s.nodes = p.nodes, s.x = p.x, s.q = p.q;
+        std::fill(s.v.begin(), s.v.end(), Vec3::Zero());
+        std::fill(s.w.begin(), s.w.end(), Vec3::Zero());
+      }
+      const Deployment& d = *compiled.deployment;
+      chainRod = d.chainRod, catheterNodes = d.tipNode;
+      DeploymentState ds = initDeployment(d, r.model, r.state, compiled.initialDeployed, compiled.initialTwist);
+      setDrawnCatheterActive(d, r.state, false);
+      AutoDeployResult one =
+          autoDeploy(d, r.model, r.state, ds, setup.deploy, contacts ? contacts : ContactForceSource(wallContactForces));
+      setDrawnCatheterActive(d, r.state, true);  // for the picture
+      if (c.coils.size() > 1) {
+        const std::string label = coil.name + ": ";
+        for (std::string& l : one.log) l = label + l;
+        if (!one.notPlaced.empty()) one.notPlaced = label + one.notPlaced;
+        if (!one.error.empty()) one.error = label + one.error;
+      }
+      const bool goOn = one.ok && one.placed;
+      accumulate(r.deploy, std::move(one));
+      if (!goOn) break;
+      // The placed coils move while the next one goes in: keep their poses, and add this one.
+      for (size_t i = 0; i < placed.size(); ++i) placed[i].pose = r.state.rods[firstPlaced + i];
+      PlacedCoil now{compiled.model.rods[size_t(d.freeRod)], r.state.rods[size_t(d.freeRod)]};
+      now.def.name = coil.name + " (placed)";
+      placed.push_back(std::move(now));
+    }
+    r.sac = measureSac(setup.sac, setup.sacVolume, setup.neck, coilLines(r.model, r.state, chainRod, catheterNodes), setup.metrics);
     r.occlusion = occlusionClass(r.sac.packingDensity, r.sac.neckCoverage);
     r.ok = r.deploy.ok;
     r.error = r.deploy.error;
@@ -95,7 +180,7 @@ std::vector<CandidateResult> runCandidates(const PlanSetup& setup, const std::ve
   return results;
 }
 
-std::vector<Candidate> sensitivityVariants(const io::CoilSpec& coil, double shiftMm, double tiltDeg) {
+std::vector<Candidate> sensitivityVariants(const std::vector<io::CoilSpec>& coil, double shiftMm, double tiltDeg) {
   std::vector<Candidate> v;
   v.push_back({coil, "nominal", Vec3::Zero(), 0});
   // The axes across the exit direction are set per scene by runCandidate's
@@ -133,6 +218,9 @@ ordered_json planJson(const PlanSetup& setup, const std::vector<CandidateResult>
     c["variant"] = r.variant;
     c["ok"] = r.ok;
     if (!r.ok) c["error"] = r.error;
+    c["placed"] = r.ok && r.deploy.placed;
+    if (!r.deploy.notPlaced.empty()) c["not_placed"] = r.deploy.notPlaced;
+    c["deployed_mm"] = round6(mm(r.deploy.deployed));
     c["packing_density"] = round6(r.sac.packingDensity);
     c["sac_volume_mm3"] = round6(mm3(r.sac.sacVolume));
     c["coil_volume_mm3"] = round6(mm3(r.sac.coilVolume));
@@ -144,14 +232,19 @@ ordered_json planJson(const PlanSetup& setup, const std::vector<CandidateResult>
     if (r.deploy.wallForcesAvailable) {
       c["max_wall_force_mN"] = round6(milliNewton(r.deploy.wall.max));
       c["mean_wall_force_mN"] = round6(milliNewton(r.deploy.wall.mean()));
+      c["peak_wall_force_mN"] = round6(milliNewton(r.deploy.wall.peak));
+      c["time_above_safety_s"] = round6(r.deploy.wall.timeAbove);
     } else {
       c["max_wall_force_mN"] = nullptr;
       c["mean_wall_force_mN"] = nullptr;
+      c["peak_wall_force_mN"] = nullptr;
+      c["time_above_safety_s"] = nullptr;
     }
     c["kickback_mm"] = round6(mm(r.deploy.maxKickback));
     c["max_deployment_force_mN"] = round6(milliNewton(r.deploy.maxDeploymentForce));
     c["max_tip_force_mN"] = round6(milliNewton(r.deploy.maxTipForce));
     c["corrections"] = r.deploy.corrections;
+    c["pull_backs"] = r.deploy.pullBacks;
     c["occlusion_class"] = r.occlusion;
     c["occlusion"] = occlusionClassName(r.occlusion);
     c["simulated_s"] = round6(r.deploy.time);
@@ -162,34 +255,84 @@ ordered_json planJson(const PlanSetup& setup, const std::vector<CandidateResult>
   return plan;
 }
 
+namespace {
+
+// Per coil with catheter variants (--sensitivity): the spread of the outcome over them.
+std::string sensitivityMarkdown(const ordered_json& plan) {
+  struct Spread {
+    int runs = 0, placed = 0, protruding = 0;
+    double lo = 1e300, hi = -1e300, wallHi = 0;
+  };
+  std::vector<std::pair<std::string, Spread>> coils;
+  for (const auto& c : plan.at("coils")) {
+    const std::string name = c.value("name", std::string("?"));
+    auto it = std::find_if(coils.begin(), coils.end(), [&](const auto& e) { return e.first == name; });
+    if (it == coils.end()) it = coils.insert(coils.end(), {name, Spread{}});
+    Spread& s = it->second;
+    ++s.runs;
+    if (c.value("ok", false) && c.value("placed", true)) ++s.placed;
+    if (c.value("protruding", false)) ++s.protruding;
+    const double p = c.value("packing_density", 0.0);
+    s.lo = std::min(s.lo, p), s.hi = std::max(s.hi, p);
+    if (c.contains("max_wall_force_mN") && c["max_wall_force_mN"].is_number())
+      s.wallHi = std::max(s.wallHi, c["max_wall_force_mN"].get<double>());
+  }
+  if (std::none_of(coils.begin(), coils.end(), [](const auto& e) { return e.second.runs > 1; })) return "";
+  std::string md = "\n## Sensitivity to the catheter position\n\n| coil | runs | placed | packing (min - max) | "
+                   "protruding | max wall mN |\n|---|---|---|---|---|---|\n";
+  char buf[512];
+  for (const auto& [name, s] : coils) {
+    if (s.runs < 2) continue;
+    std::snprintf(buf, sizeof buf, "| %s | %d | %d of %d | %.1f - %.1f %% | %d of %d | %.3g |\n", name.c_str(), s.runs,
+                  s.placed, s.runs, 100 * s.lo, 100 * s.hi, s.protruding, s.runs, s.wallHi);
+    md += buf;
+  }
+  md += "\nA robust choice keeps its packing, protrusion and placement over the variants.\n";
+  return md;
+}
+
+}  // namespace
+
 std::string planMarkdown(const ordered_json& plan) {
   std::string md = "# Coil plan: " + plan.value("scene", std::string("?")) + "\n\n";
-  char buf[512];
+  char buf[768];
   std::snprintf(buf, sizeof buf, "Sac volume %.1f mm^3 (closed by the neck plane).\n\n",
                 plan.value("sac_volume_mm3", 0.0));
   md += buf;
-  md += "| coil | variant | packing | coil vol. mm^3 | neck cov. | protruding | max wall mN | kickback mm | "
-        "push force mN | twists | class | ok |\n";
-  md += "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  md += "| coil | variant | placed | packing | coil vol. mm^3 | neck cov. | protruding | max wall mN | mean wall mN | "
+        "kickback mm | push force mN | twists / pull-backs | class |\n";
+  md += "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  std::string notes, images;
+  auto number = [](const nlohmann::ordered_json& v, const char* format) {
+    if (v.is_null()) return std::string("n/a");
+    char w[32];
+    std::snprintf(w, sizeof w, format, v.get<double>());
+    return std::string(w);
+  };
   for (const auto& c : plan.at("coils")) {
-    const std::string wall = c["max_wall_force_mN"].is_null() ? "n/a" : [&] {
-      char w[32];
-      std::snprintf(w, sizeof w, "%.3g", c["max_wall_force_mN"].get<double>());
-      return std::string(w);
-    }();
-    std::snprintf(buf, sizeof buf, "| %s | %s | %.1f %% | %.2f | %.0f %% | %s | %s | %.3g | %.3g | %d | %s | %s |\n",
-                  c["name"].get<std::string>().c_str(), c["variant"].get<std::string>().c_str(),
-                  100 * c["packing_density"].get<double>(), c["coil_volume_mm3"].get<double>(),
-                  100 * c["neck_coverage"].get<double>(), c["protruding"].get<bool>() ? "yes" : "no", wall.c_str(),
-                  c["kickback_mm"].get<double>(), c["max_deployment_force_mN"].get<double>(),
-                  c["corrections"].get<int>(), c["occlusion"].get<std::string>().c_str(),
-                  c["ok"].get<bool>() ? "yes" : ("no: " + c.value("error", std::string())).c_str());
+    const std::string name = c.value("name", std::string("?")), variant = c.value("variant", std::string("?"));
+    const bool ok = c.value("ok", false), placed = c.value("placed", ok);
+    const std::string placedText = !ok ? "failed" : placed ? "yes" : "no";
+    std::snprintf(buf, sizeof buf, "| %s | %s | %s | %.1f %% | %.2f | %.0f %% | %s | %s | %s | %.3g | %.3g | %d / %d | %s |\n",
+                  name.c_str(), variant.c_str(), placedText.c_str(), 100 * c.value("packing_density", 0.0),
+                  c.value("coil_volume_mm3", 0.0), 100 * c.value("neck_coverage", 0.0),
+                  c.value("protruding", false) ? "yes" : "no", number(c["max_wall_force_mN"], "%.3g").c_str(),
+                  number(c["mean_wall_force_mN"], "%.3g").c_str(), c.value("kickback_mm", 0.0),
+                  c.value("max_deployment_force_mN", 0.0), c.value("corrections", 0), c.value("pull_backs", 0),
+                  c.value("occlusion", std::string("?")).c_str());
     md += buf;
-    if (c.contains("screenshot")) md += "\n![" + c["name"].get<std::string>() + "](" + c["screenshot"].get<std::string>() + ")\n\n";
+    if (!ok) notes += "- " + name + " (" + variant + "): failed: " + c.value("error", std::string()) + "\n";
+    else if (c.contains("not_placed")) notes += "- " + name + " (" + variant + "): not placed: " + c["not_placed"].get<std::string>() + "\n";
+    if (c.contains("screenshot")) images += "![" + name + " (" + variant + ")](" + c["screenshot"].get<std::string>() + ")\n";
   }
-  md += "\npacking = coil volume (pi r^2 times the coil length inside the sac) / sac volume; class: Raymond-Roy-like "
-        "prediction from packing and neck coverage (thresholds in docs/planning.md). n/a: this build has no contact "
-        "forces to report.\n";
+  if (!notes.empty()) md += "\n" + notes;
+  md += sensitivityMarkdown(plan);
+  md += "\npacking = coil volume (pi r^2 times the coil length inside the sac) / sac volume; placed = pushed out "
+        "fully and detached (the operator gives a coil up when the tip force stays high after twists and pull-backs); "
+        "push force = largest axial force felt at the catheter tip with the pusher at rest; class: Raymond-Roy-like "
+        "prediction from packing and neck coverage (thresholds in docs/planning.md); n/a: the run had no wall "
+        "contact to measure.\n";
+  if (!images.empty()) md += "\n" + images;
   return md;
 }
 

@@ -36,12 +36,16 @@ struct PlanSetup {
 // neck plane leaves no volume on the sac side.
 void prepareSac(PlanSetup& setup);
 
-// One run: a coil and a catheter tip variation (sensitivity).
+// One run: a coil, or a sequence of coils deployed one after the other
+// (framing, then filling, then finishing: each detached coil stays in the
+// sac as an obstacle of the next, through rod_contact), and a catheter tip
+// variation (sensitivity).
 struct Candidate {
-  io::CoilSpec coil;
+  std::vector<io::CoilSpec> coils;  // one, or a sequence in deployment order
   std::string variant = "nominal";
   Vec3 tipShiftMm = Vec3::Zero();  // added to the catheter tip position
   double tipTiltDeg = 0;           // exit direction turned about the reference normal
+  std::string name() const;        // the coil names joined by " + "
 };
 
 struct CandidateResult {
@@ -50,7 +54,7 @@ struct CandidateResult {
   std::string error;
   SacMetrics sac;
   int occlusion = 3;
-  AutoDeployResult deploy;
+  AutoDeployResult deploy;  // of the whole sequence: times and counts summed, maxima over the coils
   double wallSeconds = 0;  // wall time of the run
   Model model;             // final configuration, for the screenshot
   State state;
@@ -65,7 +69,7 @@ std::vector<CandidateResult> runCandidates(const PlanSetup& setup, const std::ve
 
 // Sensitivity variants of a coil: nominal, tip shifted by +-shift along the
 // two axes across the exit direction, exit direction tilted by +-tilt.
-std::vector<Candidate> sensitivityVariants(const io::CoilSpec& coil, double shiftMm, double tiltDeg);
+std::vector<Candidate> sensitivityVariants(const std::vector<io::CoilSpec>& coils, double shiftMm, double tiltDeg);
 
 // DIR/plan.json body: {"format": "coilsim-plan/1", "scene", "sac_volume_mm3", "coils": [...]}.
 nlohmann::ordered_json planJson(const PlanSetup& setup, const std::vector<CandidateResult>& results);

@@ -9,6 +9,7 @@
 #include "io/units.h"
 #include "physics/integrator.h"
 #include "planning/contact_forces.h"
+#include "planning/run_contacts.h"
 
 namespace coilsim::planning {
 namespace {
@@ -95,6 +96,7 @@ PracticeSession::PracticeSession(const PracticeCase& pc, const std::string& coil
   io::CompiledScene compiled;
   try {
     compiled = io::compileSceneWithDeployment(spec);
+    addRunContacts(compiled.model, pc.sac);
     model_ = compileModel(compiled.model);
   } catch (const io::InputError&) {
     throw;
@@ -104,6 +106,7 @@ PracticeSession::PracticeSession(const PracticeCase& pc, const std::string& coil
   deployment_ = *compiled.deployment;
   state_ = makeState(model_);
   ds_ = initDeployment(deployment_, model_, state_, compiled.initialDeployed, compiled.initialTwist);
+  setDrawnCatheterActive(deployment_, state_, false);
   sac_.neck.normal.normalize();
   sacVolume_ = volumeOnSide(*sac_.mesh, sac_.neck);
   neck_ = sampleNeck(sac_);
@@ -140,7 +143,7 @@ void PracticeSession::setView(const std::string& view) {
 }
 
 void PracticeSession::sample() {
-  const SacMetrics m = measureSac(sac_, sacVolume_, neck_, coilLines(model_, state_, deployment_.chainRod, deployment_.tipNode + 1));
+  const SacMetrics m = measureSac(sac_, sacVolume_, neck_, coilLines(model_, state_, deployment_.chainRod, deployment_.tipNode));
   if (m.protruding && !protruding_) ++score_.protrusionEvents;
   protruding_ = m.protruding;
 }
@@ -151,27 +154,38 @@ bool PracticeSession::step() {
   // Counted in steps so the time is exactly steps x dt, as a reader would compute it.
   if (fluoroscopic(view_)) score_.fluoroscopyTime = double(++fluoroSteps_) * dt;
   const bool wasDetached = ds_.detached;
+  const double deployedBefore = ds_.deployed, twistBefore = ds_.twist;
   controller_.advance(deployment_, model_, state_, ds_, dt);
   controller_.notes.clear();
   if (ds_.detached && !wasDetached) {
+    detachStep_ = steps_;
     score_.detached = true;
     const Vec3& tip = state_.rods[size_t(deployment_.chainRod)].x[size_t(deployment_.tipNode)];
     score_.detachInSac = sac_.neck.signedDistance(tip) >= 0 && insideSurface(sac_, tip);
   }
-  const StepReport rep = coilsim::step(model_, state_);
+  // The steps just after detach in substeps, as autoDeploy takes them (the
+  // freed end turns further than one linearised step follows).
+  const bool fine = ds_.detached && steps_ - detachStep_ < kDetachFineSteps;
+  if (fine && !fineModel_) {
+    fineModel_ = std::make_shared<Model>(model_);
+    fineModel_->timeStep = dt / kDetachSubsteps;
+  }
+  StepReport rep;
+  for (int k = 0; k < (fine ? kDetachSubsteps : 1) && rep.ok(); ++k) rep = coilsim::step(fine ? *fineModel_ : model_, state_);
   ++steps_;
   if (!rep.ok()) {
     score_.ok = false;
     score_.error = "step refused at t = " + std::to_string(time()) + " s: " + rep.message;
     return false;
   }
-  if (!ds_.detached) score_.maxTipForce = std::max(score_.maxTipForce, tipForce(deployment_, state_).norm());
+  // The force a hand feels, with the pusher at rest (FeltTipForce: the sliding tip beam spikes while pushing).
+  if (!ds_.detached && felt_.add(deployment_, state_, ds_.deployed == deployedBefore && ds_.twist == twistBefore, dt))
+    score_.maxTipForce = std::max(score_.maxTipForce, felt_.felt);
   if (contacts_ && contacts_(model_, state_, forces_)) {
     score_.wallForcesAvailable = true;
-    WallForceStats w;
-    w.add(forces_, dt, case_.goal.maxWallForce);
-    score_.maxWallForce = std::max(score_.maxWallForce, w.max);
-    score_.timeAboveSafety += w.timeAbove;
+    wall_.add(forces_, dt, case_.goal.maxWallForce);
+    score_.maxWallForce = wall_.max;
+    score_.timeAboveSafety = wall_.timeAbove;
   }
   const long every = std::max(1L, std::lround(kSampleInterval / dt));
   if (steps_ % every == 0) sample();
@@ -182,7 +196,7 @@ ScoreSheet PracticeSession::finish() {
   ScoreSheet s = score_;
   s.time = time();
   s.coilLengthPlaced = ds_.deployed;
-  const SacMetrics m = measureSac(sac_, sacVolume_, neck_, coilLines(model_, state_, deployment_.chainRod, deployment_.tipNode + 1));
+  const SacMetrics m = measureSac(sac_, sacVolume_, neck_, coilLines(model_, state_, deployment_.chainRod, deployment_.tipNode));
   s.packingDensity = m.packingDensity;
   s.neckCoverage = m.neckCoverage;
   s.occlusion = occlusionClass(m.packingDensity, m.neckCoverage);
@@ -239,7 +253,8 @@ SessionRecording loadSession(const std::string& path) { return parseSession(io::
 
 ScoreSheet playSession(const PracticeCase& pc, const std::string& coil, const std::vector<TimedCommand>& timeline,
                        const std::vector<std::pair<double, std::string>>& views, double end,
-                       ordered_json* recordingOut, const ContactForceSource& contacts) {
+                       ordered_json* recordingOut, const ContactForceSource& contacts,
+                       const std::function<void(const PracticeSession&)>& atEnd) {
   PracticeSession session(pc, coil, contacts);
   const double dt = session.model().timeStep;
   const long steps = std::lround(end / dt);
@@ -258,6 +273,7 @@ ScoreSheet playSession(const PracticeCase& pc, const std::string& coil, const st
     if (!session.step()) break;
   }
   if (recordingOut) *recordingOut = session.recording();
+  if (atEnd) atEnd(session);
   return session.finish();
 }
 

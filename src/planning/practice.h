@@ -9,6 +9,7 @@
 // command() and setView() from input handlers, step() once per simulation
 // step, read model()/state() to draw, and score() / recording() at the end.
 // Commands and views take effect at the next step().
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -38,9 +39,9 @@ struct ScoreSheet {
   int protrusionEvents = 0;        // times the coil started protruding (sampled every 0.1 s)
   bool protrudingAtEnd = false;
   bool wallForcesAvailable = false;
-  double maxWallForce = 0;         // N
+  double maxWallForce = 0;         // N, largest wall load lasting 5 steps (WallForceStats)
   double timeAboveSafety = 0;      // s with some wall force above the goal's threshold
-  double maxTipForce = 0;          // N, force of the coil on the catheter tip
+  double maxTipForce = 0;          // N, force of the coil on the catheter tip felt with the pusher at rest
   int repositionings = 0;          // pulls of the coil back into the catheter
   double fluoroscopyTime = 0;      // s spent in the X-ray (xray or biplane) view
   bool detached = false;
@@ -78,6 +79,7 @@ class PracticeSession {
   const Deployment& deployment() const { return deployment_; }
   const DeploymentState& deploymentState() const { return ds_; }
   long steps() const { return steps_; }
+  const std::string& view() const { return view_; }  // the view looked through now
   double time() const { return double(steps_) * model_.timeStep; }
   const ScoreSheet& runningScore() const { return score_; }
 
@@ -104,6 +106,10 @@ class PracticeSession {
   bool protruding_ = false;
   ScoreSheet score_;
   std::vector<std::vector<double>> forces_;
+  WallForceStats wall_;
+  FeltTipForce felt_;
+  long detachStep_ = 0;
+  std::shared_ptr<Model> fineModel_;  // the model with a substep time step, for the steps after detach
   std::vector<nlohmann::ordered_json> recorded_;  // accepted commands as the timeline file holds them
   std::vector<std::pair<double, std::string>> views_;
 };
@@ -124,6 +130,7 @@ SessionRecording parseSession(const nlohmann::json& document, const std::string&
 ScoreSheet playSession(const PracticeCase& practiceCase, const std::string& coil,
                        const std::vector<TimedCommand>& timeline,
                        const std::vector<std::pair<double, std::string>>& views, double end,
-                       nlohmann::ordered_json* recordingOut = nullptr, const ContactForceSource& contacts = {});
+                       nlohmann::ordered_json* recordingOut = nullptr, const ContactForceSource& contacts = {},
+                       const std::function<void(const PracticeSession&)>& atEnd = {});
 
 }  // namespace coilsim::planning

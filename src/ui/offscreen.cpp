@@ -34,6 +34,7 @@ bool renderOffscreen(const Model& model, const State& state, const ViewerOptions
   Views views(*mode);
   PanelContext panel;
   panel.sceneName = options.scenePath;
+  panel.readouts = options.readouts;
   panel.interactive = false;
   panel.glInfo = render::glDescription();
   render::RenderSettings settings;

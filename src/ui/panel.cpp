@@ -195,6 +195,8 @@ void drawPanel(Session& session, Views& views, PanelContext& ctx) {
   if (ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) simulationSection(session, ctx);
   // Deployment controls (push / pull / twist / detach): see deployment_panel.cpp.
   if (ImGui::CollapsingHeader("Deployment", ImGuiTreeNodeFlags_DefaultOpen)) drawDeploymentControls(session, ctx);
+  if (ctx.readouts && ImGui::CollapsingHeader(ctx.readouts.title.c_str(), ImGuiTreeNodeFlags_DefaultOpen))
+    drawReadouts(ctx.readouts.compute(session.model(), session.state()));
   if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) viewSection(views, ctx);
   if (ImGui::CollapsingHeader("Colours and markers")) overlaySection(session, ctx);
   if (ImGui::CollapsingHeader("Effects", ImGuiTreeNodeFlags_DefaultOpen)) effectsSection(session);

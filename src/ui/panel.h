@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "render/renderer.h"
+#include "ui/readouts.h"
 #include "ui/session.h"
 #include "ui/views.h"
 
@@ -40,6 +41,7 @@ struct PanelContext {
   int sidebarWidth = 360;       // pixels, the panel's column at the left
   DeviceControls device;
   Overlays overlays;
+  ReadoutHook readouts;         // optional live read-outs (planning), a section of their own
   // Requests, handled by the caller after the frame.
   bool fitRequested = false;
   bool closeRequested = false;

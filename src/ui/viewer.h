@@ -8,6 +8,7 @@
 #include "physics/draw_data.h"
 #include "physics/model.h"
 #include "physics/state.h"
+#include "ui/readouts.h"
 #include "ui/session.h"
 
 namespace coilsim::ui {
@@ -31,6 +32,8 @@ struct ViewerOptions {
   // and by its timeline (played as `coilsim run --headless` plays it). Its
   // `initial` must match the State passed in (after initDeployment).
   std::optional<DeploymentSetup> deployment;
+  // Optional live read-outs in the panel (planning: packing, protrusion, wall-force warnings).
+  ReadoutHook readouts;
   // Set by runWindow on return: the deployment's state when the window closed.
   DeploymentState* finalDeployment = nullptr;
 };

@@ -70,6 +70,7 @@ int runWindow(const Model& model, State& state, const ViewerOptions& options) {
   Views views(*mode);
   PanelContext panel;
   panel.sceneName = options.scenePath;
+  panel.readouts = options.readouts;
   panel.glInfo = render::glDescription();
   render::RenderSettings settings;
   settings.samples = options.samples >= 0 ? options.samples : (render::softwareRenderer() ? 0 : 4);

@@ -59,7 +59,10 @@ TEST(PlanCommand, TwoCoilsGiveTheTableAndTheImages) {
     EXPECT_NEAR(c["coil_volume_mm3"].get<double>(), M_PI * 0.127 * 0.127 * c["coil_length_in_sac_mm"].get<double>(),
                 1e-4 * c["coil_volume_mm3"].get<double>() + 1e-9);
     EXPECT_TRUE(c.contains("protruding") && c["protruding"].is_boolean());
-    EXPECT_TRUE(c.contains("max_wall_force_mN"));
+    EXPECT_TRUE(c["placed"].get<bool>()) << c.dump();
+    // Deployed with wall contact: a wall force is measured, not left unknown.
+    ASSERT_FALSE(c["max_wall_force_mN"].is_null()) << c.dump();
+    EXPECT_GE(c["max_wall_force_mN"].get<double>(), 0.0);
     EXPECT_TRUE(c.contains("kickback_mm"));
     if (ui) {
       ASSERT_TRUE(c.contains("screenshot")) << c.dump();
@@ -77,6 +80,78 @@ TEST(PlanCommand, TwoCoilsGiveTheTableAndTheImages) {
   EXPECT_EQ(nlohmann::json::parse(in2)["coils"].size(), 4u);
   fs::remove_all(out);
   fs::remove_all(out2);
+}
+
+nlohmann::json readPlan(const fs::path& dir) {
+  std::ifstream in(dir / "plan.json");
+  return nlohmann::json::parse(in);
+}
+
+TEST(PlanCommand, SequenceKeepsEarlierCoilsAndMergeEqualsOneRun) {
+  const std::string c = kSource + "/scenes/cases/sphere-7mm-wide-neck.json";
+  const std::string opts = " --speed 10 --no-screenshots --out ";
+  const fs::path tmp = fs::temp_directory_path();
+  const fs::path one = tmp / "coilsim-plan-seq-one", a = tmp / "coilsim-plan-seq-a", b = tmp / "coilsim-plan-seq-b",
+                 merged = tmp / "coilsim-plan-seq-merged";
+  for (const fs::path& d : {one, a, b, merged}) fs::remove_all(d);
+  std::string log;
+  // One run of two candidates on two threads: a coil, and the same coil twice in a row.
+  ASSERT_EQ(run("plan " + c + " --coils finishing-2x10,finishing-2x10+finishing-2x10 --jobs 2" + opts + one.string(), &log), 0)
+      << log;
+  // The same as two "array tasks", merged.
+  ASSERT_EQ(run("plan " + c + " --coils finishing-2x10" + opts + a.string(), &log), 0) << log;
+  ASSERT_EQ(run("plan " + c + " --coils finishing-2x10+finishing-2x10" + opts + b.string(), &log), 0) << log;
+  ASSERT_EQ(run("plan-merge " + a.string() + " " + b.string() + " --out " + merged.string(), &log), 0) << log;
+  nlohmann::json whole = readPlan(one), parts = readPlan(merged);
+  ASSERT_EQ(whole["coils"].size(), 2u);
+  ASSERT_EQ(parts["coils"].size(), 2u);
+  EXPECT_EQ(parts["scene"], whole["scene"]);
+  EXPECT_EQ(parts["sac_volume_mm3"], whole["sac_volume_mm3"]);
+  for (size_t i = 0; i < 2; ++i) {
+    nlohmann::json w = whole["coils"][i], p = parts["coils"][i];
+    w.erase("wall_s"), p.erase("wall_s");  // wall-clock time of the run: the only thing that may differ
+    EXPECT_EQ(w, p) << w.dump() << "\n" << p.dump();
+  }
+  // Both coils stay in the closed surface (the wall holds them), so what is in the sac plus what
+  // protrudes below the neck plane is all the coil: 10 mm for one coil, 20 mm for the sequence.
+  const auto& single = whole["coils"][0];
+  const auto& sequence = whole["coils"][1];
+  EXPECT_EQ(sequence["name"], "finishing-2x10 + finishing-2x10");
+  EXPECT_TRUE(single["placed"].get<bool>()) << single.dump();
+  EXPECT_TRUE(sequence["placed"].get<bool>()) << sequence.dump();
+  for (const auto& [coil, length] : {std::pair{single, 10.0}, std::pair{sequence, 20.0}}) {
+    const double inside = coil["coil_length_in_sac_mm"].get<double>() + coil["protruding_length_mm"].get<double>();
+    EXPECT_NEAR(inside, length, 0.02 * length) << coil.dump();
+    EXPECT_FALSE(coil["max_wall_force_mN"].is_null()) << "plans run with wall contact";
+  }
+  for (const fs::path& d : {one, a, b, merged}) fs::remove_all(d);
+}
+
+TEST(PlanCommand, ACoilThatMeetsResistanceEverywhereIsReportedNotPlaced) {
+  // A threshold of 1 uN: any load on the tip is "resistance". The operator twists three times,
+  // pulls back and re-advances three times, then gives the coil up instead of pushing for ever.
+  const fs::path out = fs::temp_directory_path() / "coilsim-plan-not-placed";
+  fs::remove_all(out);
+  std::string log;
+  ASSERT_EQ(run("plan " + kSource + "/scenes/cases/sphere-7mm-wide-neck.json --coils finishing-2x10 --speed 10 " +
+                    "--force-threshold 0.001 --no-screenshots --out " + out.string(),
+                &log),
+            0)
+      << "not placed is an outcome of the plan, not a failure\n" << log;
+  const auto c = readPlan(out)["coils"][0];
+  EXPECT_TRUE(c["ok"].get<bool>()) << c.dump();
+  EXPECT_FALSE(c["placed"].get<bool>()) << c.dump();
+  ASSERT_TRUE(c.contains("not_placed")) << c.dump();
+  EXPECT_NE(c["not_placed"].get<std::string>().find("does not fit"), std::string::npos) << c.dump();
+  EXPECT_EQ(c["pull_backs"].get<int>(), 3) << c.dump();
+  EXPECT_LT(c["deployed_mm"].get<double>(), 10.0);
+  // Given up by the operator, well before the time limit (60 s + 4 L / speed = 64 s) would stop it.
+  EXPECT_LT(c["simulated_s"].get<double>(), 30.0) << c.dump();
+  std::ifstream md(out / "plan.md");
+  std::stringstream text;
+  text << md.rdbuf();
+  EXPECT_NE(text.str().find("not placed: the coil does not fit"), std::string::npos) << text.str();
+  fs::remove_all(out);
 }
 
 TEST(PlanCommand, BadInputExitsTwoNamingTheProblem) {
@@ -100,11 +175,17 @@ TEST(PracticeCommand, ReplayWritesTheSameScoreSheet) {
   }
   const std::string c = kSource + "/scenes/cases/sphere-7mm-wide-neck.json";
   std::string log;
+  const bool ui = haveUi();
+  const std::string shot = ui ? " --screenshot " + (dir / "xray.png").string() : std::string();
   ASSERT_EQ(run("practice " + c + " --coil finishing-2x10 --view xray --input " + (dir / "timeline.json").string() +
-                    " --record " + (dir / "session.json").string() + " --out " + (dir / "score.json").string(),
+                    " --record " + (dir / "session.json").string() + shot + " --out " + (dir / "score.json").string(),
                 &log),
             0)
       << log;
+  // The last frame in the X-ray view, with the live read-outs in the panel.
+  if (ui) EXPECT_GT(fs::file_size(dir / "xray.png"), 1000u);
+  // Practice by hand is the window's: scripted inputs do not go with it.
+  EXPECT_EQ(run("practice " + c + " --window --input " + (dir / "timeline.json").string(), &log), 2);
   ASSERT_EQ(run("practice " + c + " --replay " + (dir / "session.json").string() + " --out " +
                     (dir / "replayed.json").string(),
                 &log),

@@ -42,6 +42,9 @@ TEST(Practice, ScoreFollowsTheInputsAndReplayReproducesItExactly) {
   EXPECT_LE(live.packingDensity, 1.0);
   // The catheter tip is 0.5 mm inside the neck plane, inside the sphere: detached in the sac.
   EXPECT_TRUE(live.detachInSac);
+  // The sac is a wall: wall forces are measured, and a soft finishing coil loads it lightly.
+  EXPECT_TRUE(live.wallForcesAvailable);
+  EXPECT_LT(live.maxWallForce, pc.goal.maxWallForce);
 
   const std::string path = (std::filesystem::temp_directory_path() / "coilsim-practice-session.json").string();
   io::writeFileAtomic(path, io::formatJson(recording));
