@@ -74,8 +74,7 @@ AutoDeployResult autoDeploy(const Deployment& dep, const Model& model, State& st
   FeltTipForce feel(probe);
   std::vector<std::vector<double>> forces;
   enum class Phase { Stroke, Feel, Twist, Pause, PullBack, Settle, After } phase = Phase::Feel;
-  double phaseEnd = 0, twistSign = 1, detachTime = 0;
-  std::unique_ptr<Model> fineModel;
+  double phaseEnd = 0, twistSign = 1;
   int twistsHere = 0, pullBacksHere = 0;
   double progressMark = ds.deployed;  // deployed length at the last pull-back reset
   auto issue = [&](double t, const DeviceCommand& c) {
@@ -107,7 +106,6 @@ AutoDeployResult autoDeploy(const Deployment& dep, const Model& model, State& st
     } else if (phase == Phase::Settle && t >= phaseEnd - 1e-12) {
       issue(t, {Kind::Detach, 0, 0});
       phase = Phase::After, phaseEnd = t + o.afterDetach;
-      detachTime = t;
     } else if (phase == Phase::After && t >= phaseEnd - 1e-12) {
       r.time = t;
       r.placed = ds.detached;
@@ -119,14 +117,7 @@ AutoDeployResult autoDeploy(const Deployment& dep, const Model& model, State& st
     for (const std::string& n : controller.notes) r.log.push_back(sText(t) + ": " + n);
     controller.notes.clear();
     const bool pusherMoved = ds.deployed != before || ds.twist != twistBefore;  // pushed, pulled or twisted
-    // The steps after detach in substeps (kDetachSubsteps): without them, an axial-strain blow-up at detach.
-    const bool fine = ds.detached && phase == Phase::After && t < detachTime + kDetachFineSteps * dt - 0.5 * dt;
-    if (fine && !fineModel) {
-      fineModel = std::make_unique<Model>(model);
-      fineModel->timeStep = dt / kDetachSubsteps;
-    }
-    StepReport rep;
-    for (int k = 0; k < (fine ? kDetachSubsteps : 1) && rep.ok(); ++k) rep = step(fine ? *fineModel : model, state);
+    const StepReport rep = step(model, state);  // a shock at detach is split into substeps by step() itself
     ++r.steps;
     if (!rep.ok()) {
       r.ok = false;

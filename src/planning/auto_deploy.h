@@ -63,11 +63,6 @@ struct AutoDeployResult {
   std::vector<std::string> log;
 };
 
-// The steps just after detach are taken in substeps: detach frees a clamped
-// end that carries the coil's bending moment, and its light node turns
-// further than one linearised implicit step follows.
-inline constexpr int kDetachFineSteps = 10, kDetachSubsteps = 20;
-
 // Tip force of a deployment now: the elastic force of the first beam outside the catheter on the tip node.
 Vec3 tipForce(const Deployment& dep, const State& state);
 

@@ -158,20 +158,11 @@ bool PracticeSession::step() {
   controller_.advance(deployment_, model_, state_, ds_, dt);
   controller_.notes.clear();
   if (ds_.detached && !wasDetached) {
-    detachStep_ = steps_;
     score_.detached = true;
     const Vec3& tip = state_.rods[size_t(deployment_.chainRod)].x[size_t(deployment_.tipNode)];
     score_.detachInSac = sac_.neck.signedDistance(tip) >= 0 && insideSurface(sac_, tip);
   }
-  // The steps just after detach in substeps, as autoDeploy takes them (the
-  // freed end turns further than one linearised step follows).
-  const bool fine = ds_.detached && steps_ - detachStep_ < kDetachFineSteps;
-  if (fine && !fineModel_) {
-    fineModel_ = std::make_shared<Model>(model_);
-    fineModel_->timeStep = dt / kDetachSubsteps;
-  }
-  StepReport rep;
-  for (int k = 0; k < (fine ? kDetachSubsteps : 1) && rep.ok(); ++k) rep = coilsim::step(fine ? *fineModel_ : model_, state_);
+  const StepReport rep = coilsim::step(model_, state_);
   ++steps_;
   if (!rep.ok()) {
     score_.ok = false;

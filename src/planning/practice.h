@@ -108,8 +108,6 @@ class PracticeSession {
   std::vector<std::vector<double>> forces_;
   WallForceStats wall_;
   FeltTipForce felt_;
-  long detachStep_ = 0;
-  std::shared_ptr<Model> fineModel_;  // the model with a substep time step, for the steps after detach
   std::vector<nlohmann::ordered_json> recorded_;  // accepted commands as the timeline file holds them
   std::vector<std::pair<double, std::string>> views_;
 };

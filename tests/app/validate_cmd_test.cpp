@@ -53,7 +53,9 @@ TEST(DiagnoseCommand, ControlFileHasNoSignificantEffect) {
     EXPECT_FALSE(c["significant"].get<bool>()) << c["effect"];
     EXPECT_LE(c["explained_fraction"].get<double>(), previous);  // best first
     previous = c["explained_fraction"].get<double>();
-    if (c["refitted"].get<bool>()) EXPECT_EQ(c["stage_error_after"].size(), 3u);
+    if (c["refitted"].get<bool>()) {
+      EXPECT_EQ(c["stage_error_after"].size(), 3u);
+    }
   }
   EXPECT_TRUE(j["fingerprint"].contains("summary"));
 }

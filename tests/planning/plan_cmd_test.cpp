@@ -183,7 +183,9 @@ TEST(PracticeCommand, ReplayWritesTheSameScoreSheet) {
             0)
       << log;
   // The last frame in the X-ray view, with the live read-outs in the panel.
-  if (ui) EXPECT_GT(fs::file_size(dir / "xray.png"), 1000u);
+  if (ui) {
+    EXPECT_GT(fs::file_size(dir / "xray.png"), 1000u);
+  }
   // Practice by hand is the window's: scripted inputs do not go with it.
   EXPECT_EQ(run("practice " + c + " --window --input " + (dir / "timeline.json").string(), &log), 2);
   ASSERT_EQ(run("practice " + c + " --replay " + (dir / "session.json").string() + " --out " +
