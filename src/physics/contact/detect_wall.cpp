@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "physics/contact/detect.h"
 #include "physics/contact/geometry.h"
@@ -14,19 +15,40 @@ struct Nearest {
   int triangle = -1;
 };
 
+// Closest points of the segment to each candidate triangle (kept for the
+// concave-neighbour pass), in the order of `candidates`; NaN distance when a
+// triangle was skipped because its box is farther than the best so far.
+thread_local std::vector<SegmentTriangle> hits;
+
+// Squared distance between two axis-aligned boxes (0 when they overlap).
+double boxDistance2(const Vec3& lo1, const Vec3& hi1, const Vec3& lo2, const Vec3& hi2) {
+  const Vec3 gap = (lo2 - hi1).cwiseMax(lo1 - hi2).cwiseMax(0.0);
+  return gap.squaredNorm();
+}
+
 // The nearest triangle feature to segment [a, b] among those whose boxes
-// overlap the segment's box grown by `reach`.
+// overlap the segment's box grown by `reach`. A triangle whose own box is
+// farther from the segment's box than the best distance found so far cannot
+// be nearer and is skipped without the exact query.
 Nearest nearestFeature(const ObstacleTree& tree, const Vec3& a, const Vec3& b, double reach, std::vector<int>& stack,
                        std::vector<int>& candidates) {
   const Vec3 grow = Vec3::Constant(reach);
+  const Vec3 lo = a.cwiseMin(b), hi = a.cwiseMax(b);
   candidates.clear();
-  tree.overlapping(a.cwiseMin(b) - grow, a.cwiseMax(b) + grow, stack, candidates);
+  tree.overlapping(lo - grow, hi + grow, stack, candidates);
+  hits.resize(candidates.size());
   Nearest best;
   const TriangleMesh& m = tree.mesh();
-  for (const int t : candidates) {
-    const Eigen::Vector3i& f = m.triangles[t];
-    const SegmentTriangle h = closestSegmentTriangle(a, b, m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]);
-    if (best.triangle < 0 || h.distance < best.hit.distance) best = {h, t};
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    const Eigen::Vector3i& f = m.triangles[candidates[k]];
+    const Vec3 &p = m.vertices[f[0]], &q = m.vertices[f[1]], &r = m.vertices[f[2]];
+    if (best.triangle >= 0 &&
+        boxDistance2(lo, hi, p.cwiseMin(q).cwiseMin(r), p.cwiseMax(q).cwiseMax(r)) > best.hit.distance * best.hit.distance) {
+      hits[k].distance = std::numeric_limits<double>::quiet_NaN();
+      continue;
+    }
+    hits[k] = closestSegmentTriangle(a, b, p, q, r);
+    if (best.triangle < 0 || hits[k].distance < best.hit.distance) best = {hits[k], candidates[k]};
   }
   return best;
 }
@@ -94,17 +116,18 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
           const TriangleMesh& m = tree.mesh();
           const Vec3& nA = tree.normal(n.triangle);
           const Vec3& vA = m.vertices[m.triangles[n.triangle][0]];
-          static thread_local std::vector<int> near;
-          near = candidates;
           int extra = 0;
-          for (const int t : near) {
+          for (size_t ci = 0; ci < candidates.size(); ++ci) {
+            const int t = candidates[ci];
             if (t == n.triangle || extra >= 3) continue;
             const Vec3& nt = tree.normal(t);
             if (nt.dot(nA) > 0.99999 || nt.dot(nA) < 0.5) continue;
             const auto& f = m.triangles[t];
             const Vec3 centroid = (m.vertices[f[0]] + m.vertices[f[1]] + m.vertices[f[2]]) / 3;
             if (nA.dot(centroid - vA) >= 0) continue;  // a ridge into the free space: its plane would cut it
-            const SegmentTriangle hit = closestSegmentTriangle(a, b, m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]);
+            const SegmentTriangle hit = std::isnan(hits[ci].distance)
+                                            ? closestSegmentTriangle(a, b, m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]])
+                                            : hits[ci];
             if (hit.distance > radius + sweep) continue;
             ContactPoint q;
             q.segment = e, q.other = int(o), q.line = true, q.s = 0.5, q.radius = radius;
