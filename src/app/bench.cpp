@@ -12,6 +12,7 @@
 #include <map>
 #include <string>
 
+#include "app/bench_contact.h"
 #include "physics/controller.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
@@ -174,6 +175,7 @@ int runBench(const std::vector<std::string>& args) {
   fig.set("step_cost_ratio_n3000_over_n100_per_beam",
           fig.values["step_us_n3000"] / 3000.0 / (fig.values["step_us_n100"] / 100.0));
   benchValidationFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
+  benchContactFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
 #ifdef COILSIM_HAVE_UI
   benchRenderFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
 #endif

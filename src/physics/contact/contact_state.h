@@ -45,6 +45,13 @@ struct RodContacts {
   std::vector<double> selfForce;  // (nnode) normal force from self-contact per node, N
   std::vector<double> rodForce;   // (nnode) normal force from other rods per node, N
   double wallPenetration = 0;     // deepest wall penetration at the last detection, m (>= 0)
+  // Temporal coherence of the wall search: per segment, a distance within
+  // which no wall triangle lay at its last full query (0: none known), and
+  // its two end points then. Valid while the rod keeps `wallClearNodes`
+  // active nodes (a deployment inserting a node renumbers the segments).
+  std::vector<double> wallClear;  // (nnode - 1)
+  std::vector<Vec3> wallClearAt;  // (2 (nnode - 1))
+  int wallClearNodes = -1;
 };
 
 }  // namespace coilsim

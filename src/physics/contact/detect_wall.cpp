@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "physics/contact/detect.h"
 #include "physics/contact/geometry.h"
@@ -14,19 +15,44 @@ struct Nearest {
   int triangle = -1;
 };
 
+// Closest points of the segment to each candidate triangle (kept for the
+// concave-neighbour pass), in the order of `candidates`; NaN distance when a
+// triangle was skipped because its box is farther than the best so far.
+thread_local std::vector<SegmentTriangle> hits;
+
+// How far beyond its reach each wall query looks, so that a segment found
+// clear can skip the next queries until it has moved that far (m).
+constexpr double kLookAhead = 0.5e-3;
+
+// Squared distance between two axis-aligned boxes (0 when they overlap).
+double boxDistance2(const Vec3& lo1, const Vec3& hi1, const Vec3& lo2, const Vec3& hi2) {
+  const Vec3 gap = (lo2 - hi1).cwiseMax(lo1 - hi2).cwiseMax(0.0);
+  return gap.squaredNorm();
+}
+
 // The nearest triangle feature to segment [a, b] among those whose boxes
-// overlap the segment's box grown by `reach`.
+// overlap the segment's box grown by `reach`. A triangle whose own box is
+// farther from the segment's box than the best distance found so far cannot
+// be nearer and is skipped without the exact query.
 Nearest nearestFeature(const ObstacleTree& tree, const Vec3& a, const Vec3& b, double reach, std::vector<int>& stack,
                        std::vector<int>& candidates) {
   const Vec3 grow = Vec3::Constant(reach);
+  const Vec3 lo = a.cwiseMin(b), hi = a.cwiseMax(b);
   candidates.clear();
-  tree.overlapping(a.cwiseMin(b) - grow, a.cwiseMax(b) + grow, stack, candidates);
+  tree.overlapping(lo - grow, hi + grow, stack, candidates);
+  hits.resize(candidates.size());
   Nearest best;
   const TriangleMesh& m = tree.mesh();
-  for (const int t : candidates) {
-    const Eigen::Vector3i& f = m.triangles[t];
-    const SegmentTriangle h = closestSegmentTriangle(a, b, m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]);
-    if (best.triangle < 0 || h.distance < best.hit.distance) best = {h, t};
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    const Eigen::Vector3i& f = m.triangles[candidates[k]];
+    const Vec3 &p = m.vertices[f[0]], &q = m.vertices[f[1]], &r = m.vertices[f[2]];
+    if (best.triangle >= 0 &&
+        boxDistance2(lo, hi, p.cwiseMin(q).cwiseMin(r), p.cwiseMax(q).cwiseMax(r)) > best.hit.distance * best.hit.distance) {
+      hits[k].distance = std::numeric_limits<double>::quiet_NaN();
+      continue;
+    }
+    hits[k] = closestSegmentTriangle(a, b, p, q, r);
+    if (best.triangle < 0 || hits[k].distance < best.hit.distance) best = {hits[k], candidates[k]};
   }
   return best;
 }
@@ -64,17 +90,34 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
     std::swap(rc.wall, rc.previous);
     rc.wall.clear();
     if (r.active && model.rods[k].role != RodRole::Catheter) {
+      if (rc.wallClearNodes != r.activeNodes) {
+        rc.wallClear.assign(std::max(0, r.activeNodes - 1), 0.0);
+        rc.wallClearAt.assign(2 * rc.wallClear.size(), Vec3::Zero());
+        rc.wallClearNodes = r.activeNodes;
+      }
       for (int e = 0; e + 1 < r.activeNodes; ++e) {
         const Vec3 &a = r.x[e], &b = r.x[e + 1];
         const double radius = (1 + kWallSkin) * 0.5 * (r.nodes[e].radius + r.nodes[e + 1].radius);
         // What the segment can sweep in this step at its start velocity: a
         // contact it would reach must be in this step's implicit solve.
         const double sweep = margin + h * std::max(r.v[e].norm(), r.v[e + 1].norm());
+        const double reach = radius + sweep;
+        // Temporal coherence: no triangle lay within wallClear of the
+        // segment where it was; if it has moved less than that minus its
+        // reach, none is within reach now (exact, so nothing is missed).
+        if (rc.wallClear[e] > 0) {
+          const double moved = std::max((a - rc.wallClearAt[2 * e]).norm(), (b - rc.wallClearAt[2 * e + 1]).norm());
+          if (moved + reach < rc.wallClear[e]) continue;
+        }
+        double clear = INFINITY;
+        const size_t before = rc.wall.size();
         for (size_t o = 0; o < model.obstacles.size(); ++o) {
           if (!model.obstacles[o].contact || o >= model.obstacleTrees.size()) continue;
           const ObstacleTree& tree = *model.obstacleTrees[o];
-          Nearest n = nearestFeature(tree, a, b, radius + sweep, stack, candidates);
-          if (n.triangle < 0 || n.hit.distance > radius + sweep) {
+          // Queried beyond the reach, so the clearance found lasts a while.
+          Nearest n = nearestFeature(tree, a, b, reach + kLookAhead, stack, candidates);
+          clear = std::min(clear, n.triangle < 0 ? reach + kLookAhead : n.hit.distance);
+          if (n.triangle < 0 || n.hit.distance > reach) {
             // Nothing near: either free, or pushed wholly through the wall
             // since the last step. Only the second needs the wider search.
             ContactPoint probe;
@@ -94,18 +137,19 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
           const TriangleMesh& m = tree.mesh();
           const Vec3& nA = tree.normal(n.triangle);
           const Vec3& vA = m.vertices[m.triangles[n.triangle][0]];
-          static thread_local std::vector<int> near;
-          near = candidates;
           int extra = 0;
-          for (const int t : near) {
+          for (size_t ci = 0; ci < candidates.size(); ++ci) {
+            const int t = candidates[ci];
             if (t == n.triangle || extra >= 3) continue;
             const Vec3& nt = tree.normal(t);
             if (nt.dot(nA) > 0.99999 || nt.dot(nA) < 0.5) continue;
             const auto& f = m.triangles[t];
             const Vec3 centroid = (m.vertices[f[0]] + m.vertices[f[1]] + m.vertices[f[2]]) / 3;
             if (nA.dot(centroid - vA) >= 0) continue;  // a ridge into the free space: its plane would cut it
-            const SegmentTriangle hit = closestSegmentTriangle(a, b, m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]);
-            if (hit.distance > radius + sweep) continue;
+            const SegmentTriangle hit = std::isnan(hits[ci].distance)
+                                            ? closestSegmentTriangle(a, b, m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]])
+                                            : hits[ci];
+            if (hit.distance > reach) continue;
             ContactPoint q;
             q.segment = e, q.other = int(o), q.line = true, q.s = 0.5, q.radius = radius;
             q.normal = -nt;
@@ -117,6 +161,9 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
             ++extra;
           }
         }
+        const bool free = rc.wall.size() == before && clear > reach;
+        rc.wallClear[e] = free ? std::min(clear, reach + kLookAhead) : 0.0;
+        rc.wallClearAt[2 * e] = a, rc.wallClearAt[2 * e + 1] = b;
       }
     }
     rc.wallPenetration = reportContacts(rc.wall, r, law, rc.wallForce);

@@ -10,7 +10,7 @@ namespace coilsim {
 namespace {
 
 constexpr ParamSpec kParams[] = {
-    {"stiffness_n_mm", "N/mm", "penalty stiffness of one segment pair", 2.0, 0.0, 1e4, 1e3},
+    {"stiffness_n_mm", "N/mm", "penalty stiffness of one segment pair", 50.0, 0.0, 1e4, 1e3},
     {"damping_ratio", "1", "normal (and sticking) damping as a fraction of critical for the node mass", 1.0, 0.0, 10.0,
      1.0},
     {"margin_mm", "mm", "distance at which a pair is tracked before it touches", 0.05, 0.0, 5.0, 1e-3},
