@@ -14,6 +14,7 @@
 #include "physics/controller.h"
 #include "physics/integrator.h"
 #include "support/meshes.h"
+#include "support/known_bugs.h"
 #include "support/rod_models.h"
 
 namespace coilsim {
@@ -55,10 +56,10 @@ std::unique_ptr<TwoCoils> twoCoils() {
   def.effects.push_back(EffectRegistry::global().use("self_contact"));
   def.effects.push_back(EffectRegistry::global().use("rod_contact"));
   def.obstacles.push_back(test::obstacleOf(test::icosphere(5e-3, 4)));
-  // The second catheter tip 1 mm beside the first: the first coil's
-  // proximal end stays where it was detached, at the first tip.
+  // The second catheter tip 0.5 mm beside the first, so that the second coil
+  // is aimed at the first (without coil-coil contact they cross: the control).
   c->first = addDeployment(coilDef("first", 5e-3, Vec3(0, 0, -2.5e-3)), def);
-  c->second = addDeployment(coilDef("second", 4e-3, Vec3(1e-3, 0, -2.5e-3)), def);
+  c->second = addDeployment(coilDef("second", 4e-3, Vec3(0.5e-3, 0, -2.5e-3)), def);
   c->model = compileModel(def);
   c->state = makeState(c->model);
   c->ds1 = initDeployment(c->first, c->model, c->state, 0.0, 0.0);
@@ -114,6 +115,7 @@ SecondDeployment deployBoth(bool rodContact) {
 }
 
 TEST(RodContactTest, SecondCoilNeverPassesThroughTheDetachedFirst) {
+  SKIP_IF_OPEN(test::kCoilCoilContactYields);
   const SecondDeployment s = deployBoth(true);
   std::printf("[ measured ] closest centre lines of the two coils %.1f um (r1 + r2 = %.0f um)\n", s.closest * 1e6,
               2 * kRadius * 1e6);

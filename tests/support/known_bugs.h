@@ -89,6 +89,35 @@ inline constexpr KnownBug kElementRollFromNodeA{
     "known bug: the element frame takes its roll from node a only, so curved rods under torsion converge at "
     "first order (beam.cpp evalBeam); see tests/support/known_bugs.h"};
 
+// The contact law of docs/contact.md (implicit secant friction, swept
+// detection, 5 % skin, wall stiffness 200 N/mm2) is validated on the paper's
+// solid wire (EI 3 N mm2: the 10 mm/s cavity test). A soft wound coil
+// (sidewall-7mm.json: B = 0.003 N mm2, 1000 times softer) pushed at 10 mm/s
+// straight into the dome of the 7 mm phantom has its step refused (axial
+// strain 0.5-1.1 in a distal beam) after 19-40 mm, with 1 or 3 Newton
+// iterations, at 0.5 ms steps, with wall stiffness 20-200 N/mm2, with or
+// without self-contact and with a catheter tilted 15 or 20 degrees; the
+// default scene (tilted 30 degrees) completes its 30 mm but a loop dips
+// 0.3 mm below the neck plane. The contact code before commit 9b52128 ran
+// both scenes cleanly but failed the cavity test.
+inline constexpr KnownBug kSoftCoilHeadOnWallContact{
+    true,
+    "known bug: a soft wound coil pushed head-on into a sac dome at 10 mm/s is refused (axial strain) by the "
+    "current wall-contact law, which is validated on the paper's stiff wire only; see tests/support/known_bugs.h"};
+
+// Coil-coil contact (rod_contact) yields when a pushed coil is aimed at a
+// detached one (tests/physics/contact_rod_test.cpp, second catheter tip
+// 0.5 mm beside the first): closest centre lines 187 um at the default
+// 50 N/mm, 95 um at 500 N/mm, 233 um at 2000 N/mm, against r1 + r2 = 300 um
+// (0 um with the contact off). The pusher drives the second coil's
+// proximal end by prescribed motion, and the pair coupling is split between
+// the two rods' diagonal blocks (physics/contact/response.h), so the first,
+// light and wall-held, coil does not give way and the penalty yields.
+inline constexpr KnownBug kCoilCoilContactYields{
+    true,
+    "known bug: a coil pushed at a detached coil passes 40-70 % of a wire diameter into it (rod_contact penalty "
+    "yields); see tests/support/known_bugs.h"};
+
 #define SKIP_IF_OPEN(bug) \
   if ((bug).open) GTEST_SKIP() << (bug).summary
 
