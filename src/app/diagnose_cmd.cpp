@@ -1,6 +1,7 @@
 // `coilsim diagnose`: the candidate effects ranked by how much of the base
 // model's residual each explains once fitted (docs/validation.md).
 #include "app/diagnose_cmd.h"
+#include "app/format.h"
 
 #include <cmath>
 #include <cstdio>
@@ -20,12 +21,6 @@ namespace {
 
 using nlohmann::ordered_json;
 using namespace validation;
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
 
 int usage(const std::string& message) {
   std::fprintf(stderr,

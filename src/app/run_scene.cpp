@@ -1,4 +1,5 @@
 #include "app/run_scene.h"
+#include "app/format.h"
 
 #include <chrono>
 #include <cstdio>
@@ -28,12 +29,6 @@ using Clock = std::chrono::steady_clock;
 int usageError(const std::string& message) {
   std::fprintf(stderr, "coilsim: %s\n", message.c_str());
   return kExitUsage;
-}
-
-std::string fmt(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
 }
 
 // "(x, y, z) mm" of a point given in metres.

@@ -1,6 +1,7 @@
 // `coilsim validate`: the model against a measurement, before and after
 // switching effects on and fitting parameters (docs/validation.md).
 #include "app/validate_cmd.h"
+#include "app/format.h"
 
 #include <charconv>
 #include <cmath>
@@ -21,12 +22,6 @@ namespace {
 
 using nlohmann::ordered_json;
 using namespace validation;
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
 
 int usage(const std::string& message) {
   std::fprintf(stderr,

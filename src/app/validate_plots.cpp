@@ -1,5 +1,6 @@
 // Software-drawn charts of the validation workbench (see validate_plots.h).
 #include "app/validate_plots.h"
+#include "app/format.h"
 
 #include <algorithm>
 #include <array>
@@ -25,12 +26,6 @@ constexpr Colour kBlack{0, 0, 0}, kGrey{150, 150, 150}, kLight{225, 225, 225};
 // Stage colours, distinct on white.
 constexpr Colour kStageColours[] = {{31, 119, 180}, {214, 39, 40}, {44, 160, 44}, {148, 103, 189}, {255, 127, 14},
                                     {140, 86, 75},  {227, 119, 194}, {23, 190, 207}};
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
 
 class Painter {
  public:
