@@ -5,6 +5,13 @@
 namespace coilsim {
 
 double assembleRod(const Model& model, int rodIndex, RodState& rod, double time, double loadFactor, bool withTangent) {
+  TangentRequest t;
+  if (withTangent) t.matrix = &rod.work.stiffness;
+  return assembleRodInto(model, rodIndex, rod, time, loadFactor, t);
+}
+
+double assembleRodInto(const Model& model, int rodIndex, RodState& rod, double time, double loadFactor,
+                       const TangentRequest& tangent) {
   const RodModel& rm = model.rods[rodIndex];
   RodWorkspace& w = rod.work;
   for (auto& f : w.force) f.setZero();
@@ -18,14 +25,20 @@ double assembleRod(const Model& model, int rodIndex, RodState& rod, double time,
   // right one, so no block needs clearing first.
   double energy = 0;
   BeamEval ev;
-  if (withTangent && rod.activeNodes > 0) w.stiffness.diag[0].setZero();
+  BlockTridiagonal* K = tangent.matrix;
+  const Vec6* velocity = tangent.velocity && K ? tangent.velocity->data() : nullptr;
+  Vec6* product = velocity ? tangent.product->data() : nullptr;
+  if (K && rod.activeNodes > 0) K->diag[0].setZero();
+  if (product)
+    for (int i = 0; i < rod.activeNodes; ++i) product[i].setZero();
   for (int e = 0; e + 1 < rod.activeNodes; ++e) {
     evalBeam(rod.beams[e], rod.x[e], rod.q[e], rod.x[e + 1], rod.q[e + 1], false, ev);
     w.force[e] += ev.forceA;
     w.force[e + 1] += ev.forceB;
     energy += ev.energy;
-    if (withTangent)
-      addBeamTangent(rod.beams[e], ev.rotation, w.stiffness.diag[e], w.stiffness.lower[e], w.stiffness.diag[e + 1]);
+    if (K)
+      addBeamTangent(rod.beams[e], ev.rotation, tangent.scale, K->diag[e], K->lower[e], K->diag[e + 1],
+                     velocity ? velocity + e : nullptr, product ? product + e : nullptr);
   }
   for (const NodalLoad& l : rm.loads) {
     if (l.node >= rod.activeNodes) continue;

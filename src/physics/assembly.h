@@ -12,6 +12,20 @@ namespace coilsim {
 // work.effectD. Returns the elastic energy (J).
 double assembleRod(const Model& model, int rodIndex, RodState& rod, double time, double loadFactor, bool withTangent);
 
+// What the dynamic step wants of the elastic tangent: (h b + h^2) K written
+// straight into its implicit matrix, and that matrix times the current
+// velocities for its right-hand side, both in the one pass over the beams.
+struct TangentRequest {
+  BlockTridiagonal* matrix = nullptr;            // receives scale K
+  double scale = 1.0;
+  const std::vector<Vec6>* velocity = nullptr;   // (v, w) per node; if set,
+  std::vector<Vec6>* product = nullptr;          // product = scale K velocity
+};
+
+// assembleRod with the tangent going where `tangent` says instead of work.stiffness.
+double assembleRodInto(const Model& model, int rodIndex, RodState& rod, double time, double loadFactor,
+                       const TangentRequest& tangent);
+
 // Rotational inertia of node i about global axes: R I_material R^T.
 Mat3 nodeInertiaGlobal(const RodState& rod, const Quat& q, int node);
 

@@ -57,46 +57,6 @@ BeamRest makeBeamRest(const Vec3& xa, const Quat& qa, const Vec3& xb, const Quat
   return r;
 }
 
-namespace {
-
-// R diag(d) R^T, for every beam in every step. For a round section the
-// two transverse entries are equal and it is d1 1 + (d0 - d1) t t^T, t the
-// element axis: a few multiplications instead of a 3x3 triple product.
-inline Mat3 rotatedDiagonal(const Mat3& R, const Vec3& d) {
-  if (d[1] == d[2]) {
-    const Vec3 t = R.col(0);
-    Mat3 out = (d[0] - d[1]) * (t * t.transpose());
-    out.diagonal().array() += d[1];
-    return out;
-  }
-  return R * d.asDiagonal() * R.transpose();
-}
-
-// Global tangent blocks T K T^T from the distinct entries of the local K.
-// With ey, ez the element's transverse axes, the bending-shear coupling of
-// node a's translation with its rotation is c = shearY ey ez^T - shearZ ez ey^T;
-// the signs of the other blocks follow Przemieniecki's matrix (beam.h):
-//   K(a,a) = [tt c; c^T rs],  K(b,a) = [-tt -c; c^T rc],  K(b,b) = [tt -c; -c^T rs].
-template <bool addToA>
-void globalTangent(const BeamRest& r, const Mat3& R, Mat6& kaa, Mat6& kba, Mat6& kbb) {
-  const Mat3 tt = rotatedDiagonal(R, r.axial);
-  const Mat3 rs = rotatedDiagonal(R, r.rotSelf);
-  const Mat3 rc = rotatedDiagonal(R, r.rotCross);
-  const Mat3 c = r.shearY * (R.col(1) * R.col(2).transpose()) - r.shearZ * (R.col(2) * R.col(1).transpose());
-  if (addToA) {
-    kaa.topLeftCorner<3, 3>() += tt;
-    kaa.topRightCorner<3, 3>() += c;
-    kaa.bottomLeftCorner<3, 3>() += c.transpose();
-    kaa.bottomRightCorner<3, 3>() += rs;
-  } else {
-    kaa << tt, c, c.transpose(), rs;
-  }
-  kba << -tt, -c, c.transpose(), rc;
-  kbb << tt, -c, -c.transpose(), rs;
-}
-
-}  // namespace
-
 void evalBeam(const BeamRest& rest, const Vec3& xa, const Quat& qa, const Vec3& xb, const Quat& qb,
               bool withTangent, BeamEval& out) {
   const Quat carried = qa * rest.nodeToElement;  // node a's frame turned by the rest offset
@@ -136,11 +96,10 @@ void evalBeam(const BeamRest& rest, const Vec3& xa, const Quat& qa, const Vec3& 
   out.forceA.tail<3>() = -(R * f.segment<3>(3));
   out.forceB.head<3>() = -(R * f.segment<3>(6));
   out.forceB.tail<3>() = -(R * f.segment<3>(9));
-  if (withTangent) globalTangent<false>(rest, R, out.kaa, out.kba, out.kbb);
-}
-
-void addBeamTangent(const BeamRest& rest, const Mat3& rotation, Mat6& diagA, Mat6& lowerBA, Mat6& diagB) {
-  globalTangent<true>(rest, rotation, diagA, lowerBA, diagB);
+  if (withTangent) {
+    out.kaa.setZero();
+    addBeamTangent(rest, R, 1.0, out.kaa, out.kba, out.kbb);
+  }
 }
 
 }  // namespace coilsim

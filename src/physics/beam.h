@@ -47,9 +47,12 @@ void evalBeam(const BeamRest& rest, const Vec3& xa, const Quat& qa, const Vec3& 
               bool withTangent, BeamEval& out);
 
 // Adds the global tangent of an element evaluated with rotation
-// `BeamEval::rotation` straight into a block-tridiagonal chain, without the
-// copies through BeamEval: K(a,a) += kaa, K(b,a) = kba, K(b,b) = kbb.
-void addBeamTangent(const BeamRest& rest, const Mat3& rotation, Mat6& diagA, Mat6& lowerBA, Mat6& diagB);
+// `BeamEval::rotation`, times `scale`, straight into a block-tridiagonal
+// chain without the copies through BeamEval: K(a,a) += s kaa, K(b,a) = s kba,
+// K(b,b) = s kbb. With `velocity` (the two nodes' (v, w)) it also adds this
+// element's s K velocity to `product` (two entries).
+void addBeamTangent(const BeamRest& rest, const Mat3& rotation, double scale, Mat6& diagA, Mat6& lowerBA,
+                    Mat6& diagB, const Vec6* velocity = nullptr, Vec6* product = nullptr);
 
 // Element rest constants from the rest poses of its two nodes.
 BeamRest makeBeamRest(const Vec3& xa, const Quat& qa, const Vec3& xb, const Quat& qb,

@@ -51,14 +51,16 @@ StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, l
 
   for (int it = 0; it < model.newtonIterations; ++it) {
     ++iterations;
-    assembleRod(model, rodIndex, r, time + h, 1.0, true);
+    // The matrix starts as (h b + h^2) K, assembled in place together with
+    // (h b + h^2) K vel for the right-hand side; the mass goes on after.
+    for (int i = 0; i < n; ++i) w.velocity[i] << r.v[i], r.w[i];
     BlockTridiagonal& A = w.system;
-    const BlockTridiagonal& K = w.stiffness;
-    const double kScale = h * b + h * h;           // stiffness in the matrix
-    const double kRhs = b + (it == 0 ? h : 0.0);    // stiffness times velocity in the right-hand side
+    TangentRequest tangent{&A, h * b + h * h, &w.velocity, &w.stiffnessTimesVelocity};
+    assembleRodInto(model, rodIndex, r, time + h, 1.0, tangent);
+    // h (b + h) K vel in the first iteration, h b K vel after it.
+    const double kRhs = h * (b + (it == 0 ? h : 0.0)) / tangent.scale;
     for (int i = 0; i < n; ++i) {
-      Vec6& vel = w.velocity[i];
-      vel << r.v[i], r.w[i];
+      const Vec6& vel = w.velocity[i];
       const double m = r.nodes[i].mass;
       const Mat3 inertia = nodeInertiaGlobal(r, w.q0[i], i);
       // Mass and Rayleigh mass damping act on translation and rotation separately.
@@ -69,25 +71,17 @@ StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, l
         massTimes.head<3>() += m * (r.v[i] - w.v0[i]) / h;
         massTimes.tail<3>() += inertia * (r.w[i] - w.w0[i]) / h;
       }
+      Vec6& rhs = w.rhs[i];
+      rhs = h * (w.force[i] - massTimes) - kRhs * w.stiffnessTimesVelocity[i];
       Mat6& Ad = A.diag[i];
-      Ad.noalias() = kScale * K.diag[i];
       Ad.topLeftCorner<3, 3>().diagonal().array() += (1 + h * a) * m;
       Ad.bottomRightCorner<3, 3>() += (1 + h * a) * inertia;
-      Vec6 rhs = w.force[i] - massTimes;
-      rhs.noalias() -= kRhs * (K.diag[i] * vel);
       // An effect's force already holds its own damping (-D v); D and K only
       // make the matrix implicit in them.
       if (w.effectsTouchedMatrix) {
         Ad += h * w.effectD[i] + h * h * w.effectK[i];
-        if (it == 0) rhs.noalias() -= h * (w.effectK[i] * vel);
+        if (it == 0) rhs.noalias() -= (h * h) * (w.effectK[i] * vel);
       }
-      w.rhs[i] = h * rhs;
-    }
-    for (int e = 0; e + 1 < n; ++e) {
-      A.lower[e].noalias() = kScale * K.lower[e];
-      // Off-diagonal coupling: K(e+1,e) v_e acts on e+1, K(e,e+1) v_{e+1} on e.
-      w.rhs[e + 1].noalias() -= (h * kRhs) * (K.lower[e] * w.velocity[e]);
-      w.rhs[e].noalias() -= (h * kRhs) * (K.lower[e].transpose() * w.velocity[e + 1]);
     }
     for (int i = 0; i < n; ++i) {
       const unsigned m = w.fixedMask[i];

@@ -29,6 +29,7 @@ State makeState(const Model& model) {
     w.solver.resize(n);
     w.rhs.assign(n, Vec6::Zero());
     w.velocity.assign(n, Vec6::Zero());
+    w.stiffnessTimesVelocity.assign(n, Vec6::Zero());
     w.x0 = r.x;
     w.q0 = r.q;
     w.v0 = r.v;

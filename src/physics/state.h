@@ -28,6 +28,7 @@ struct RodWorkspace {
   BlockTridiagonalSolver solver;
   std::vector<Vec6> rhs;         // (nnode)
   std::vector<Vec6> velocity;    // (nnode) generalised velocity packed (v, w)
+  std::vector<Vec6> stiffnessTimesVelocity;  // (nnode) (h b + h^2) K velocity, dynamics.cpp
   std::vector<Vec3> x0;          // (nnode) start-of-step copy, for restore
   std::vector<Quat> q0;
   std::vector<Vec3> v0, w0;
