@@ -57,6 +57,23 @@ BeamRest makeBeamRest(const Vec3& xa, const Quat& qa, const Vec3& xb, const Quat
   return r;
 }
 
+namespace {
+
+// The least rotation taking the x axis of unit quaternion q onto unit vector
+// b: q' = (1 + a.b, a x b) normalised, a = q e_x read off the rotation
+// matrix's first column. minimalRotation() without its norms, which are 1
+// here, and without rotating a vector by a quaternion: every beam, every step.
+inline Quat turnOntoChord(const Quat& q, const Vec3& b) {
+  const double w = q.w(), x = q.x(), y = q.y(), z = q.z();
+  const Vec3 a(1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y));
+  const double c = a.dot(b);
+  if (c < -1.0 + 1e-12) return minimalRotation(a, b);
+  const Vec3 axis = a.cross(b);
+  return Quat(1 + c, axis.x(), axis.y(), axis.z()).normalized();
+}
+
+}  // namespace
+
 void evalBeam(const BeamRest& rest, const Vec3& xa, const Quat& qa, const Vec3& xb, const Quat& qb,
               bool withTangent, BeamEval& out) {
   const Quat carried = qa * rest.nodeToElement;  // node a's frame turned by the rest offset
@@ -68,7 +85,7 @@ void evalBeam(const BeamRest& rest, const Vec3& xa, const Quat& qa, const Vec3& 
   mean.coeffs() = (carried.coeffs() + side * carriedB.coeffs()).normalized();
   const Vec3 chord = xb - xa;
   const double length = chord.norm();
-  out.frame = (minimalRotation(mean * Vec3::UnitX(), chord / length) * mean).normalized();
+  out.frame = (turnOntoChord(mean, chord / length) * mean).normalized();
   out.rotation = out.frame.toRotationMatrix();
   const Mat3& R = out.rotation;
   out.rotationA = quatLog(out.frame.conjugate() * carried);

@@ -12,7 +12,11 @@ namespace {
 // of the factorisation have this form. Eigen vectorises a 6-row column with
 // 2-wide packets only (6 is not a multiple of 4); with AVX2 a column is one
 // 4-wide and one 2-wide FMA chain, a third fewer instructions in the sweep.
-template <bool accumulate, bool negate>
+// Structure the factorisation knows is skipped: B lower triangular (B = C^{-1}:
+// column j of A B^T sums A(:, k) B(j, k) over k <= j only, 21 terms of 36),
+// and a symmetric result of which only the lower triangle is read (rows 0-3
+// of columns 4 and 5 are left as they were).
+template <bool accumulate, bool negate, bool lowerTriangularB, bool lowerHalfOfC>
 inline void multiplyTransposed6(const Mat6& a, const Mat6& b, Mat6& c) {
 #if defined(__AVX2__) && defined(__FMA__)
   const double* A = a.data();
@@ -22,14 +26,16 @@ inline void multiplyTransposed6(const Mat6& a, const Mat6& b, Mat6& c) {
   __m128d colB[6];
   for (int k = 0; k < 6; ++k) colA[k] = _mm256_loadu_pd(A + 6 * k), colB[k] = _mm_loadu_pd(A + 6 * k + 4);
   for (int j = 0; j < 6; ++j) {
+    const bool upperRows = !lowerHalfOfC || j < 4;
     __m256d hi = accumulate ? _mm256_loadu_pd(C + 6 * j) : _mm256_setzero_pd();
     __m128d lo = accumulate ? _mm_loadu_pd(C + 6 * j + 4) : _mm_setzero_pd();
-    for (int k = 0; k < 6; ++k) {
+    const int kEnd = lowerTriangularB ? j + 1 : 6;
+    for (int k = 0; k < kEnd; ++k) {
       const double bjk = negate ? -B[6 * k + j] : B[6 * k + j];  // B(j, k)
-      hi = _mm256_fmadd_pd(colA[k], _mm256_set1_pd(bjk), hi);
+      if (upperRows) hi = _mm256_fmadd_pd(colA[k], _mm256_set1_pd(bjk), hi);
       lo = _mm_fmadd_pd(colB[k], _mm_set1_pd(bjk), lo);
     }
-    _mm256_storeu_pd(C + 6 * j, hi);
+    if (upperRows) _mm256_storeu_pd(C + 6 * j, hi);
     _mm_storeu_pd(C + 6 * j + 4, lo);
   }
 #else
@@ -120,8 +126,8 @@ bool BlockTridiagonalSolver::factorize(const BlockTridiagonal& a, int n) {
     s = a.diag[i];
     if (i > 0) {
       // G^T = A(i, i-1) C_{i-1}^{-T}, then the Schur complement A(i,i) - G^T G.
-      multiplyTransposed6<false, false>(a.lower[i - 1], chol_[i - 1], gain_[i]);
-      multiplyTransposed6<true, true>(gain_[i], gain_[i], s);
+      multiplyTransposed6<false, false, true, false>(a.lower[i - 1], chol_[i - 1], gain_[i]);
+      multiplyTransposed6<true, true, false, true>(gain_[i], gain_[i], s);
     }
     if (!invertedCholesky6(s)) return false;
   }
