@@ -126,10 +126,21 @@ int runValidateWindow(const WorkbenchArgs& a, const WindowArgs& w) {
       h.descriptions.push_back(std::string(e->description()));
     }
   }
+  for (const std::vector<std::string>* list : {&a.effects, &w.toggle})
+    for (const std::string& e : *list)
+      if (std::find(h.effects.begin(), h.effects.end(), e) == h.effects.end()) {
+        std::string offered;
+        for (const std::string& o : h.effects) offered.append(offered.empty() ? "" : ", ").append(o);
+        std::fprintf(stderr, "coilsim validate: the panel has no toggle for '%s' (it offers %s)\n", e.c_str(),
+                     offered.c_str());
+        return kExitUsage;
+      }
   h.initiallyOn = a.effects;
   h.before = view(m, before);
   const std::vector<std::string> baseFit = a.fit.empty() ? std::vector<std::string>{"young_modulus"} : a.fit;
-  h.fit = [m, so, baseFit, quiet = a.quiet](const std::vector<std::string>& effects, const ui::FitProgress& progress) {
+  std::vector<double> beforeErrors;
+  for (const StageComparison& s : before) beforeErrors.push_back(s.ok ? s.metrics.stageError : NAN);
+  h.fit = [m, so, baseFit, beforeErrors, quiet = a.quiet](const std::vector<std::string>& effects, const ui::FitProgress& progress) {
     ui::ValidationView out;
     out.effects = effects;
     try {
@@ -151,7 +162,17 @@ int runValidateWindow(const WorkbenchArgs& a, const WindowArgs& w) {
         progress(k, rms * 1e3);
       };
       const FitResult r = identify(fsim, fcmp, start, fo);
-      ui::ValidationView v = view(m, fcmp.compare(fsim.run(r.ok ? r.params : start, false)));
+      const std::vector<StageComparison> after = fcmp.compare(fsim.run(r.ok ? r.params : start, false));
+      ui::ValidationView v = view(m, after);
+      // One line on stdout per fit, for scripts: each stage's error before -> after.
+      std::string line = "validate: fit with effects [";
+      for (size_t k = 0; k < effects.size(); ++k) line.append(k ? "," : "").append(effects[k]);
+      line.append("]: stage error");
+      for (size_t k = 0; k < after.size(); ++k)
+        line.append(fmt(" %.4f ->", beforeErrors[k])).append(after[k].ok ? fmt(" %.4f", after[k].metrics.stageError) : " failed");
+      if (!r.ok) line.append(" (fit failed: ").append(r.message).append(")");
+      std::printf("%s\n", line.c_str());
+      std::fflush(stdout);
       v.effects = effects;
       v.ok = r.ok;
       v.message = r.message;

@@ -110,7 +110,7 @@ class Workbench {
   void drawErrorPlots();
 
   ValidationHooks hooks_;
-  std::vector<char> on_;  // (effects) toggles; char, since ImGui::Checkbox wants a bool* we build per frame
+  std::vector<char> on_;  // (effects) toggles; char: a vector<bool> has no bool& to hand ImGui
   ValidationView after_;
   size_t stage_ = 0;
   bool showBefore_ = false, sceneChanged_ = true;
