@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 #include "app/run_scene.h"
 #include "io/json_reader.h"
@@ -140,7 +141,8 @@ int runValidateWindow(const WorkbenchArgs& a, const WindowArgs& w) {
   const std::vector<std::string> baseFit = a.fit.empty() ? std::vector<std::string>{"young_modulus"} : a.fit;
   std::vector<double> beforeErrors;
   for (const StageComparison& s : before) beforeErrors.push_back(s.ok ? s.metrics.stageError : NAN);
-  h.fit = [m, so, baseFit, beforeErrors, quiet = a.quiet](const std::vector<std::string>& effects, const ui::FitProgress& progress) {
+  h.fit = [m, so, baseFit, beforeErrors, quiet = a.quiet](const std::vector<std::string>& effects, const ui::FitProgress& progress,
+                                                       const std::function<bool()>& stop) {
     ui::ValidationView out;
     out.effects = effects;
     try {
@@ -161,6 +163,7 @@ int runValidateWindow(const WorkbenchArgs& a, const WindowArgs& w) {
         if (!quiet) std::fprintf(stderr, "  fit: evaluation %d, RMS residual %.4f mm\n", k, rms * 1e3);
         progress(k, rms * 1e3);
       };
+      fo.stop = stop;
       const FitResult r = identify(fsim, fcmp, start, fo);
       const std::vector<StageComparison> after = fcmp.compare(fsim.run(r.ok ? r.params : start, false));
       ui::ValidationView v = view(m, after);

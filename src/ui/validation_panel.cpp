@@ -44,6 +44,7 @@ class Workbench {
     for (const std::string& e : h.initiallyOn) toggle(e);
   }
   ~Workbench() {
+    stop_ = true;  // a closing window does not wait for the whole fit
     if (thread_.joinable()) thread_.join();
   }
 
@@ -66,13 +67,17 @@ class Workbench {
       evaluations_ = 0;
     }
     fitting_ = true;
+    stop_ = false;
     ++fits_;
     thread_ = std::thread([this, effects] {
-      ValidationView v = hooks_.fit(effects, [this](int k, double rms) {
-        std::lock_guard<std::mutex> lock(mutex_);
-        live_.push_back(float(rms));
-        evaluations_ = k;
-      });
+      ValidationView v = hooks_.fit(
+          effects,
+          [this](int k, double rms) {
+            std::lock_guard<std::mutex> lock(mutex_);
+            live_.push_back(float(rms));
+            evaluations_ = k;
+          },
+          [this] { return stop_.load(); });
       v.effects = effects;  // what was asked, whatever the callback says
       std::lock_guard<std::mutex> lock(mutex_);
       done_ = std::move(v);
@@ -116,7 +121,7 @@ class Workbench {
   bool showBefore_ = false, sceneChanged_ = true;
   std::thread thread_;
   std::mutex mutex_;
-  std::atomic<bool> fitting_{false};
+  std::atomic<bool> fitting_{false}, stop_{false};
   int fits_ = 0;
   std::vector<float> live_;  // RMS residual (mm) per evaluation of the running fit
   int evaluations_ = 0;
@@ -176,9 +181,11 @@ void Workbench::drawFit() {
     }
     ImGui::EndTable();
   }
-  if (busy) ImGui::BeginDisabled();
-  if (ImGui::Button("Fit")) startFit();
-  if (busy) ImGui::EndDisabled();
+  if (busy) {
+    if (ImGui::Button("Stop")) stop_ = true;
+  } else if (ImGui::Button("Fit")) {
+    startFit();
+  }
   ImGui::SameLine();
   std::vector<float> history;
   int evaluations = 0;
@@ -199,6 +206,7 @@ void Workbench::drawFit() {
   ImGui::PlotLines("##iterations", history.data(), int(history.size()), 0, overlay, 0.0f, 1.1f * top + 1e-6f,
                    ImVec2(ImGui::GetContentRegionAvail().x, 80));
   if (!after_.ok) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "fit failed: %s", after_.message.c_str());
+  if (stop_ && busy) ImGui::TextUnformatted("stopping after this evaluation...");
   if (!after_.effects.empty() || !after_.fitted.empty()) {
     std::string on;
     for (const std::string& e : after_.effects) on += (on.empty() ? "" : ", ") + e;

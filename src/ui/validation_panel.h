@@ -49,8 +49,12 @@ struct ValidationHooks {
   ValidationView before;                    // the base model at the file's nominal values
   ValidationView after;                     // what "after" shows until the first fit (no stages: nothing yet)
   // Fits with these effects on. Runs on a background thread (it must not
-  // touch the caller's simulators); calls `progress` after each evaluation.
-  std::function<ValidationView(const std::vector<std::string>& effectsOn, const FitProgress& progress)> fit;
+  // touch the caller's simulators); calls `progress` after each evaluation
+  // and should end soon (ok = false) once `stopRequested` returns true (the
+  // Stop button, the window closing).
+  std::function<ValidationView(const std::vector<std::string>& effectsOn, const FitProgress& progress,
+                               const std::function<bool()>& stopRequested)>
+      fit;
   int maxEvaluations = 120;                 // for the progress bar
 };
 

@@ -54,7 +54,8 @@ ValidationHooks hooks(Recorder& rec, bool fitOk = true) {
   h.effects = {"buoyancy", "drag", "gravity_tilt"};
   h.initiallyOn = {"buoyancy"};
   h.before = viewOf(Colour(0, 1, 0, 1), 0.5f);  // the base model: green
-  h.fit = [&rec, fitOk](const std::vector<std::string>& effects, const FitProgress& progress) {
+  h.fit = [&rec, fitOk](const std::vector<std::string>& effects, const FitProgress& progress,
+                        const std::function<bool()>&) {
     {
       std::lock_guard<std::mutex> lock(rec.mutex);
       rec.calls.push_back(effects);
