@@ -255,12 +255,13 @@ TEST(HiddenEffect, BuoyancyIsAbsorbedByE) {
 // later capture lets a 25 % wrong E slip by whole periods, and the fit
 // lands in another minimum). A fast push barely swings a helix, which
 // slides along its own rest curve (docs/validation.md). The coil is thinner
-// (wire radius 75 um: more sag per stiffness) and the fluid is contrast
-// medium (1.4 g/cm3, buoyancy 22 % of the nitinol's weight), denser than
-// the 1.0 g/cm3 the screening starts from.
+// (wire radius 60 um: sag per stiffness goes as 1 / r^2, so the static
+// stages show the weight error) and the fluid is contrast medium
+// (1.4 g/cm3, buoyancy 22 % of the nitinol's weight), denser than the
+// 1.0 g/cm3 the screening starts from.
 TEST(HiddenEffect, Buoyancy) {
   Measurement sk = skeleton();
-  const double rhoC = 6450, rhoF = 1400, wire = 0.075e-3;
+  const double rhoC = 6450, rhoF = 1400, wire = 0.06e-3;
   sk.coil.wireRadius = wire;
   sk.coil.massPerLength = rhoC * M_PI * wire * wire;
   addTwistStage(sk, 0.05, M_PI / 2, 0.02, 0.05);
