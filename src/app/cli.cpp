@@ -41,6 +41,7 @@ void printUsage(std::FILE* to) {
       "       coilsim plan-merge DIR... --out DIR             merge plans (e.g. of a Slurm job array)\n"
       "       coilsim practice CASE ...     play or replay a practice session, write its score sheet\n"
       "       coilsim validate FILE [--effects a,b] [--fit young_modulus,...] --out DIR   model vs a measurement\n"
+      "       coilsim validate FILE --window   the same as a panel: effect toggles, Fit, live plots, 3D error\n"
       "       coilsim diagnose FILE [--fit ...] --out DIR   which physical effect is missing (docs/validation.md)\n"
       "       coilsim help                  this text\n"
       "       coilsim --version\n"

@@ -11,6 +11,7 @@
 
 #include "app/run_scene.h"
 #include "app/validate_plots.h"
+#include "app/validate_window.h"
 #include "io/json_reader.h"
 #include "io/json_writer.h"
 #include "io/measurement.h"
@@ -28,6 +29,8 @@ int usage(const std::string& message) {
                "coilsim validate: %s\n"
                "usage: coilsim validate FILE [--effects a,b] [--fit young_modulus,...] --out DIR\n"
                "         [--spacing MM] [--push-increment MM] [--no-plots] [--quiet]\n"
+               "       coilsim validate FILE --window [--effects a,b] [--fit ...]   (the panel)\n"
+               "       coilsim validate FILE --screenshot PNG [--toggle a,b] [--auto-fit]   (the panel off-screen)\n"
                "(docs/validation.md)\n",
                message.c_str());
   return kExitUsage;
@@ -215,8 +218,36 @@ void writePlots(const std::string& dir, const Measurement& m, const std::vector<
 }
 
 int runValidate(const std::vector<std::string>& args) {
+  // The panel's own options first; the rest are the workbench's.
+  WindowArgs w;
+  std::vector<std::string> rest;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--window") {
+      w.window = true;
+    } else if (args[i] == "--auto-fit") {
+      w.autoFit = true;
+    } else if (args[i] == "--screenshot" || args[i] == "--toggle") {
+      if (i + 1 >= args.size() || args[i + 1].empty()) return usage(args[i] + " needs a value");
+      if (args[i] == "--screenshot") w.screenshot = args[++i];
+      else w.toggle = splitList(args[++i]);
+    } else {
+      rest.push_back(args[i]);
+    }
+  }
+  const bool panel = w.window || !w.screenshot.empty();
+  if (!panel && (w.autoFit || !w.toggle.empty())) return usage("--toggle and --auto-fit drive the panel: add --window or --screenshot PNG");
   WorkbenchArgs a;
-  if (const std::string e = parseWorkbenchArgs(args, true, a); !e.empty()) return usage(e);
+  if (panel) rest.insert(rest.end(), {"--out", "."});  // the panel writes no report
+  if (const std::string e = parseWorkbenchArgs(rest, true, a); !e.empty()) return usage(e);
+  if (panel) {
+    try {
+      for (const std::string& e : a.effects) effectFromFile(e, Measurement{});
+      for (const std::string& e : w.toggle) effectFromFile(e, Measurement{});
+    } catch (const std::invalid_argument& e) {
+      return usage(std::string("--effects/--toggle: ") + e.what());
+    }
+    return runValidateWindow(a, w);
+  }
   auto say = [&](const std::string& s) {
     if (!a.quiet) std::fprintf(stderr, "%s\n", s.c_str());
   };

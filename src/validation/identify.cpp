@@ -16,21 +16,26 @@ double toVar(const FitParam& f, double v) { return f.logScale ? std::log(v) : v 
 double fromVar(const FitParam& f, double z) { return f.logScale ? std::exp(z) : z * (f.hi - f.lo); }
 
 struct Problem {
-  StageSimulator* sim;
-  const Comparison* cmp;
+  StageSimulator* sim = nullptr;
+  const Comparison* cmp = nullptr;
   ModelParams params;
   std::vector<FitParam> fit;
-  const FitOptions* options;
+  const FitOptions* options = nullptr;
   int evaluations = 0;
   double best = INFINITY;
   std::vector<double> bestZ;
   std::vector<double> history;
   size_t residualSize = 0;
+  bool stopped = false;
 };
 
 double objective(const std::vector<double>& z, std::vector<double>& grad, void* data) {
   auto& P = *static_cast<Problem*>(data);
   (void)grad;  // derivative-free
+  if (P.options->stop && P.options->stop()) {
+    P.stopped = true;
+    throw nlopt::forced_stop();
+  }
   ModelParams p = P.params;
   for (size_t k = 0; k < z.size(); ++k) setParam(p, P.fit[k].name, fromVar(P.fit[k], z[k]));
   const auto sims = P.sim->run(p, true);
@@ -75,7 +80,8 @@ Eigen::MatrixXd residualJacobian(StageSimulator& sim, const Comparison& cmp, con
 FitResult identify(StageSimulator& sim, const Comparison& cmp, const ModelParams& start, const FitOptions& options) {
   FitResult res;
   res.params = start;
-  Problem P{&sim, &cmp, start, {}, &options};
+  Problem P;
+  P.sim = &sim, P.cmp = &cmp, P.params = start, P.options = &options;
   for (const std::string& name : options.params) {
     std::string why;
     const auto f = describeParam(name, start, cmp.measurement(), why);
@@ -118,6 +124,12 @@ FitResult identify(StageSimulator& sim, const Comparison& cmp, const ModelParams
       opt.optimize(z, f);
     } catch (const std::exception& e) {
       // Roundoff-limited and max-evaluation stops still leave the best point.
+      if (P.stopped) {
+        res.message = "stopped";
+        res.history = P.history;
+        res.evaluations = P.evaluations;
+        return res;
+      }
       if (P.bestZ.empty()) {
         res.message = std::string("optimiser failed: ") + e.what();
         return res;

@@ -34,6 +34,9 @@ struct FitOptions {
   double chi2Tolerance = 0.01;
   // Called after each evaluation (evaluation count, RMS residual per coordinate in m).
   std::function<void(int, double)> progress;
+  // Asked before each evaluation (a window's Stop button); true ends the fit
+  // at once: ok = false, message "stopped", no uncertainties.
+  std::function<bool()> stop;
 };
 
 struct FittedValue {

@@ -118,6 +118,25 @@ inline constexpr KnownBug kCoilCoilContactYields{
     "known bug: a coil pushed at a detached coil passes 40-70 % of a wire diameter into it (rod_contact penalty "
     "yields); see tests/support/known_bugs.h"};
 
+// solveStatic does not converge once a self_contact pair presses: a
+// right-handed 8 mm helix (pitch 0.3 mm, wire 0.2 mm, 80 mm) leaving the
+// catheter with its loops horizontal, winding upwards, so that gravity lays
+// each loop on the one below, is refused at the first touch (26 mm pushed;
+// at pitch 0.4 mm, 35 mm): "Newton did not converge at load factor 0.0039
+// after 8 bisections", with friction on or off, at 1 and 2 mm beams. The
+// pair's stiffness sits on the two segments' diagonal blocks only
+// (physics/contact/response.h), which is not the Jacobian of the pair force
+// (the coupling between distant nodes is missing), and bisection restarts
+// the load ramp from zero on an already loaded, touching coil. Heavily
+// damped implicit Euler steps instead (mass damping 100/s, 5 ms) reached
+// rest at 50 mm in 250-600 steps per 1 mm pushed but at 71 mm still moved
+// at up to 3 cm/s after 600 steps. Without it the validation workbench
+// cannot test a hidden self_contact (docs/validation.md).
+inline constexpr KnownBug kStaticSelfContactDiverges{
+    true,
+    "known bug: solveStatic does not converge once loops of one coil press on each other (self_contact); "
+    "see tests/support/known_bugs.h"};
+
 #define SKIP_IF_OPEN(bug) \
   if ((bug).open) GTEST_SKIP() << (bug).summary
 

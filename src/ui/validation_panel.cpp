@@ -1,0 +1,406 @@
+// The validation workbench window (see validation_panel.h): the panel's
+// state, the background fit, the ImGui drawing and the two frame loops
+// (window and off-screen).
+#define GLFW_INCLUDE_NONE
+#include "ui/validation_panel.h"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <utility>
+
+#include "render/backend.h"
+#include "render/image.h"
+#include "render/renderer.h"
+#include "ui/imgui_layer.h"
+#include "ui/views.h"
+
+namespace coilsim::ui {
+namespace {
+
+double wallSeconds() {
+  using clock = std::chrono::steady_clock;
+  static const clock::time_point start = clock::now();
+  return std::chrono::duration<double>(clock::now() - start).count();
+}
+
+// What the panel holds between frames; the fit runs on its own thread and
+// hands its progress and result over under the mutex.
+class Workbench {
+ public:
+  explicit Workbench(const ValidationHooks& h) : hooks_(h), after_(h.after) {
+    on_.assign(h.effects.size(), false);
+    // The longest stage first: it shows the most of the coil.
+    stage_ = h.before.stages.empty() ? 0 : h.before.stages.size() - 1;
+    for (const std::string& e : h.initiallyOn) toggle(e);
+  }
+  ~Workbench() {
+    stop_ = true;  // a closing window does not wait for the whole fit
+    if (thread_.joinable()) thread_.join();
+  }
+
+  // Flips one effect's toggle; false if there is no such effect.
+  bool toggle(const std::string& effect) {
+    for (size_t i = 0; i < hooks_.effects.size(); ++i)
+      if (hooks_.effects[i] == effect) return on_[i] = !on_[i], true;
+    return false;
+  }
+
+  void startFit() {
+    if (fitting_ || !hooks_.fit) return;
+    if (thread_.joinable()) thread_.join();
+    std::vector<std::string> effects;
+    for (size_t i = 0; i < on_.size(); ++i)
+      if (on_[i]) effects.push_back(hooks_.effects[i]);
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      live_.clear();
+      evaluations_ = 0;
+    }
+    fitting_ = true;
+    stop_ = false;
+    ++fits_;
+    thread_ = std::thread([this, effects] {
+      ValidationView v = hooks_.fit(
+          effects,
+          [this](int k, double rms) {
+            std::lock_guard<std::mutex> lock(mutex_);
+            live_.push_back(float(rms));
+            evaluations_ = k;
+          },
+          [this] { return stop_.load(); });
+      v.effects = effects;  // what was asked, whatever the callback says
+      std::lock_guard<std::mutex> lock(mutex_);
+      done_ = std::move(v);
+      fitting_ = false;
+    });
+  }
+
+  // Takes a finished fit's result on the drawing thread.
+  void poll() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!done_) return;
+    after_ = std::move(*done_);
+    done_.reset();
+    if (after_.history.empty()) after_.history = live_;
+    sceneChanged_ = true;
+  }
+
+  bool fitting() const { return fitting_; }
+  int fits() const { return fits_; }
+  const ValidationView& after() const { return after_; }
+  // What the plots and the 3D view show: the base model until a fit, or when asked.
+  bool showingBefore() const { return showBefore_ || after_.stages.empty(); }
+  const ValidationView& shown() const { return showingBefore() ? hooks_.before : after_; }
+  const DrawData* scene() const {
+    const ValidationView& v = shown();
+    return stage_ < v.scenes.size() ? &v.scenes[stage_] : nullptr;
+  }
+  bool takeSceneChanged() { return std::exchange(sceneChanged_, false); }
+
+  void draw(int sidebarWidth, int height);
+
+ private:
+  void drawTable();
+  void drawFit();
+  void drawErrorPlots();
+
+  ValidationHooks hooks_;
+  std::vector<char> on_;  // (effects) toggles; char: a vector<bool> has no bool& to hand ImGui
+  ValidationView after_;
+  size_t stage_ = 0;
+  bool showBefore_ = false, sceneChanged_ = true;
+  std::thread thread_;
+  std::mutex mutex_;
+  std::atomic<bool> fitting_{false}, stop_{false};
+  int fits_ = 0;
+  std::vector<float> live_;  // RMS residual (mm) per evaluation of the running fit
+  int evaluations_ = 0;
+  std::optional<ValidationView> done_;
+};
+
+void Workbench::drawTable() {
+  const ValidationView& b = hooks_.before;
+  if (!ImGui::BeginTable("stages", 7, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit))
+    return;
+  for (const char* h : {"stage", "l (mm)", "error before", "error after", "node error after", "displ. (mm)", "dist. (mm)"})
+    ImGui::TableSetupColumn(h);
+  ImGui::TableHeadersRow();
+  for (size_t k = 0; k < b.stages.size(); ++k) {
+    const ValidationStageRow& s = b.stages[k];
+    const ValidationStageRow* a = k < after_.stages.size() ? &after_.stages[k] : nullptr;
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    if (ImGui::Selectable(s.name.c_str(), stage_ == k, ImGuiSelectableFlags_SpanAllColumns)) {
+      stage_ = k;
+      sceneChanged_ = true;
+    }
+    ImGui::TableNextColumn();
+    ImGui::Text("%.1f", s.deployedMm);
+    ImGui::TableNextColumn();
+    s.ok ? ImGui::Text("%.4f", s.stageError) : ImGui::TextUnformatted("failed");
+    ImGui::TableNextColumn();
+    if (a && a->ok) {
+      const bool better = a->stageError < s.stageError;
+      ImGui::TextColored(better ? ImVec4(0.5f, 1.0f, 0.5f, 1) : ImVec4(1, 0.7f, 0.4f, 1), "%.4f", a->stageError);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.3f +- %.3f", a->nodeErrorMean, a->nodeErrorSd);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.3f", a->meanDisplacementMm);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.3f", a->meanDistanceMm);
+    } else {
+      ImGui::TextUnformatted(a ? "failed" : "-");
+      for (int c = 0; c < 3; ++c) ImGui::TableNextColumn();
+    }
+  }
+  ImGui::EndTable();
+}
+
+void Workbench::drawFit() {
+  ImGui::TextUnformatted("Effects beyond the base model:");
+  const bool busy = fitting_;
+  if (ImGui::BeginTable("effects", 3)) {
+    for (size_t i = 0; i < hooks_.effects.size(); ++i) {
+      ImGui::TableNextColumn();
+      bool on = on_[i];
+      if (busy) ImGui::BeginDisabled();
+      if (ImGui::Checkbox(hooks_.effects[i].c_str(), &on)) on_[i] = on;
+      if (busy) ImGui::EndDisabled();
+      if (i < hooks_.descriptions.size() && ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s", hooks_.descriptions[i].c_str());
+    }
+    ImGui::EndTable();
+  }
+  if (busy) {
+    if (ImGui::Button("Stop")) stop_ = true;
+  } else if (ImGui::Button("Fit")) {
+    startFit();
+  }
+  ImGui::SameLine();
+  std::vector<float> history;
+  int evaluations = 0;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    history = busy || after_.history.empty() ? live_ : after_.history;
+    evaluations = busy ? evaluations_ : int(history.size());
+  }
+  const float fraction = std::min(1.0f, float(evaluations) / float(std::max(1, hooks_.maxEvaluations)));
+  char label[96];
+  std::snprintf(label, sizeof label, busy ? "fitting: evaluation %d" : "%d evaluations", evaluations);
+  ImGui::ProgressBar(busy ? fraction : (fits_ > 0 ? 1.0f : 0.0f), ImVec2(-1, 0), label);
+  float top = 0;
+  for (float h : history) top = std::max(top, h);
+  char overlay[96] = "RMS residual per coordinate (mm) along the evaluations";
+  if (!history.empty())
+    std::snprintf(overlay, sizeof overlay, "RMS residual: %.4f mm (first %.4f)", history.back(), history.front());
+  ImGui::PlotLines("##iterations", history.data(), int(history.size()), 0, overlay, 0.0f, 1.1f * top + 1e-6f,
+                   ImVec2(ImGui::GetContentRegionAvail().x, 80));
+  if (!after_.ok) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "fit failed: %s", after_.message.c_str());
+  if (stop_ && busy) ImGui::TextUnformatted("stopping after this evaluation...");
+  if (!after_.effects.empty() || !after_.fitted.empty()) {
+    std::string on;
+    for (const std::string& e : after_.effects) on += (on.empty() ? "" : ", ") + e;
+    ImGui::Text("After: effects %s", on.empty() ? "none" : on.c_str());
+    for (const std::string& f : after_.fitted) ImGui::BulletText("%s", f.c_str());
+  }
+}
+
+void Workbench::drawErrorPlots() {
+  const ValidationView& v = shown();
+  float top = 0;
+  for (const ValidationStageRow& s : v.stages) {
+    top = std::max(top, s.noiseFloorMm);
+    for (float e : s.errorMm) top = std::max(top, e);
+  }
+  ImGui::Text("Node error |x_sim - x_meas| along the arc length (%s), common scale 0-%.3f mm:",
+              showingBefore() ? "before" : "after", 1.1 * top);
+  for (const ValidationStageRow& s : v.stages) {
+    char overlay[160];
+    const float peak = s.errorMm.empty() ? 0.0f : *std::max_element(s.errorMm.begin(), s.errorMm.end());
+    std::snprintf(overlay, sizeof overlay, "%s: 0-%.0f mm, peak %.3f mm, noise %.3f mm", s.name.c_str(),
+                  s.arcMm.empty() ? 0.0 : double(s.arcMm.back()), double(peak), double(s.noiseFloorMm));
+    ImGui::PlotLines(("##arc" + s.name).c_str(), s.errorMm.data(), int(s.errorMm.size()), 0, overlay, 0.0f,
+                     1.1f * top + 1e-6f, ImVec2(ImGui::GetContentRegionAvail().x, 46));
+  }
+}
+
+void Workbench::draw(int sidebarWidth, int height) {
+  ImGui::SetNextWindowPos(ImVec2(0, 0));
+  ImGui::SetNextWindowSize(ImVec2(float(sidebarWidth), float(height)));
+  ImGui::Begin("Validation", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  ImGui::TextWrapped("%s", hooks_.title.c_str());
+  ImGui::Separator();
+  drawTable();
+  ImGui::Separator();
+  drawFit();
+  ImGui::Separator();
+  if (ImGui::Checkbox("show the base model (before)", &showBefore_)) sceneChanged_ = true;
+  drawErrorPlots();
+  ImGui::Separator();
+  const ValidationView& v = shown();
+  if (stage_ < v.stages.size()) {
+    const ValidationStageRow& s = v.stages[stage_];
+    const float peak = s.errorMm.empty() ? 0.0f : *std::max_element(s.errorMm.begin(), s.errorMm.end());
+    ImGui::TextWrapped("3D (%s): %s, the coil coloured by node error from blue (0) to red (%.3f mm), the measured "
+                       "centre line grey, the catheter's last 5 mm dark. Drag to orbit, wheel to zoom; click a stage in "
+                       "the table to see it.",
+                       showingBefore() ? "before" : "after", s.name.c_str(), double(peak));
+  }
+  ImGui::End();
+}
+
+struct Frame {
+  render::Renderer renderer;
+  ImGuiLayer imgui;
+  Views views;
+  render::RenderSettings settings;
+};
+
+int sidebarOf(int width) { return std::min(std::max(int(0.42 * width), 420), 620); }
+
+bool drawFrame(Frame& f, Workbench& w, int width, int height, double dt, std::string& error) {
+  const int side = sidebarOf(width);
+  const render::Rect area{side, 0, width - side, height};
+  static const DrawData empty;
+  const DrawData& scene = w.scene() ? *w.scene() : empty;
+  if (w.takeSceneChanged()) f.views.fit(render::boundsOf(scene), area.width, area.height);
+  f.settings.drawPoints = false;
+  if (!f.renderer.render(scene, f.views.camera(), f.settings, width, height, area, error)) return false;
+  f.imgui.newFrame(width, height, dt);
+  w.draw(side, height);
+  f.renderer.bindFrame();
+  f.imgui.render();
+  return true;
+}
+
+// Mouse over the scene: drag orbits, the wheel zooms.
+void steerCamera(Frame& f, int sidebar) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantCaptureMouse || io.MousePos.x < float(sidebar)) return;
+  if (io.MouseDown[0]) f.views.camera().orbit(-0.01 * io.MouseDelta.x, 0.01 * io.MouseDelta.y);
+  if (io.MouseWheel != 0) f.views.camera().zoom(std::pow(1.1, double(io.MouseWheel)));
+}
+
+bool applyScript(Workbench& w, const ValidationWindowOptions& o, std::string& error) {
+  for (const std::string& e : o.toggle)
+    if (!w.toggle(e)) {
+      error = "no effect called '" + e + "' to toggle";
+      return false;
+    }
+  if (o.autoFit) w.startFit();
+  return true;
+}
+
+bool writeImage(const render::Image& image, const std::string& path, std::string& error) {
+  if (!render::writePng(path, image, error)) return false;
+  std::printf("coilsim: wrote %s (%dx%d)\n", path.c_str(), image.width, image.height);
+  return true;
+}
+
+}  // namespace
+
+int runValidationWindow(const ValidationHooks& hooks, const ValidationWindowOptions& o) {
+  std::string error;
+  render::BackendOptions bo;
+  bo.width = o.width, bo.height = o.height;
+  bo.title = "coilsim validate - " + hooks.title;
+  auto backend = render::createBackend("glfw", bo, error);
+  if (!backend) {
+    std::fprintf(stderr, "coilsim: %s\n", error.c_str());
+    return 1;
+  }
+  GLFWwindow* window = static_cast<GLFWwindow*>(backend->nativeWindow());
+  auto f = std::make_unique<Frame>();
+  if (!f->renderer.init(error) || !f->imgui.init(window, error)) {
+    std::fprintf(stderr, "coilsim: %s\n", error.c_str());
+    return 1;
+  }
+  Workbench w(hooks);
+  if (!applyScript(w, o, error)) {
+    std::fprintf(stderr, "coilsim: %s\n", error.c_str());
+    return 2;
+  }
+  const bool scripted = !o.screenshotPath.empty();
+  const double start = wallSeconds();
+  double last = start;
+  int exitCode = 0, framesAfterFit = 0;
+  while (!glfwWindowShouldClose(window)) {
+    glfwPollEvents();
+    const double now = wallSeconds(), dt = now - last;
+    last = now;
+    w.poll();
+    const int fbw = backend->framebufferWidth(), fbh = backend->framebufferHeight();
+    if (fbw <= 0 || fbh <= 0) {
+      glfwWaitEventsTimeout(0.05);
+      continue;
+    }
+    if (!drawFrame(*f, w, fbw, fbh, dt, error)) {
+      std::fprintf(stderr, "coilsim: %s\n", error.c_str());
+      exitCode = 1;
+      break;
+    }
+    steerCamera(*f, sidebarOf(fbw));
+    f->renderer.present(fbw, fbh);
+    // A scripted run closes two frames after its fit (ImGui lays a new table out once).
+    if (scripted && !w.fitting() && (!o.autoFit || w.fits() > 0) && ++framesAfterFit > 2) {
+      render::Image image;
+      if (!render::Renderer::readWindowPixels(fbw, fbh, image) || !writeImage(image, o.screenshotPath, error)) {
+        std::fprintf(stderr, "coilsim: could not write the window's picture %s: %s\n", o.screenshotPath.c_str(),
+                     error.c_str());
+        exitCode = 1;
+      }
+      if (!w.after().ok) exitCode = 1;
+      glfwSetWindowShouldClose(window, 1);
+    }
+    if (scripted && now - start > o.wallLimitSeconds) {
+      std::fprintf(stderr, "coilsim: the scripted fit did not end within %.0f s\n", o.wallLimitSeconds);
+      exitCode = 1;
+      glfwSetWindowShouldClose(window, 1);
+    }
+    backend->present();
+  }
+  return exitCode;
+}
+
+bool renderValidationOffscreen(const ValidationHooks& hooks, const ValidationWindowOptions& o, std::string& error) {
+  if (o.screenshotPath.empty()) {
+    error = "no screenshot path given for the off-screen render";
+    return false;
+  }
+  render::BackendOptions bo;
+  bo.width = o.width, bo.height = o.height;
+  auto backend = render::createBackend("osmesa", bo, error);
+  if (!backend) return false;
+  auto f = std::make_unique<Frame>();
+  if (!f->renderer.init(error) || !f->imgui.init(nullptr, error)) return false;
+  Workbench w(hooks);
+  if (!applyScript(w, o, error)) return false;
+  while (w.fitting()) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  w.poll();
+  // ImGui sizes tables and auto-fitting items on their first frame: two frames.
+  for (int k = 0; k < 2; ++k)
+    if (!drawFrame(*f, w, o.width, o.height, 1.0 / 60.0, error)) return false;
+  render::Image image;
+  if (!f->renderer.readFrame(image)) {
+    error = "could not read the off-screen frame back";
+    return false;
+  }
+  if (!writeImage(image, o.screenshotPath, error)) return false;
+  if (!w.after().ok) {
+    error = "the fit failed: " + w.after().message;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace coilsim::ui

@@ -1,0 +1,56 @@
+// identify's stop request (the panel's Stop button): the fit ends at the
+// evaluation that asks, says "stopped" and reports no values.
+#include <gtest/gtest.h>
+
+#include "validation/generate.h"
+#include "validation/identify.h"
+
+namespace coilsim::validation {
+namespace {
+
+Measurement straightCantilever() {
+  Measurement m;
+  m.name = "straight";
+  m.coil.length = 0.03;
+  m.coil.wireRadius = 0.1e-3;
+  m.coil.massPerLength = 21450 * M_PI * 1e-8;
+  m.coil.youngModulus = 7e9;
+  m.coil.hasYoungModulus = true;
+  m.tip.direction = Vec3::UnitX();
+  m.tip.normal = Vec3::UnitZ();
+  Stage s;
+  s.name = "l = 30 mm";
+  s.deployed = 0.03;
+  m.stages.push_back(s);
+  return m;
+}
+
+TEST(Identify, StopRequestEndsTheFitAtOnce) {
+  const Measurement sk = straightCantilever();
+  ModelParams truth = ModelParams::nominal(sk);
+  truth.youngModulus = 5e9;
+  GenerateOptions g;
+  g.sigma = 0.02e-3;
+  const Measurement m = generateMeasurement(sk, truth, g);
+  StageSimulator sim(m, {2e-3, 2e-3, 1e-3});
+  Comparison cmp(m);
+  FitOptions o;
+  o.params = {"young_modulus"};
+  int asked = 0;
+  o.stop = [&] { return ++asked > 3; };
+  const FitResult r = identify(sim, cmp, ModelParams::nominal(m), o);
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(r.message, "stopped");
+  EXPECT_EQ(r.evaluations, 3);
+  EXPECT_EQ(r.history.size(), 3u);
+  EXPECT_TRUE(r.fitted.empty());
+  // Without the request the same fit runs to its end and finds E.
+  o.stop = nullptr;
+  const FitResult full = identify(sim, cmp, ModelParams::nominal(m), o);
+  ASSERT_TRUE(full.ok) << full.message;
+  EXPECT_GT(full.evaluations, 3);
+  EXPECT_NEAR(full.fitted[0].value, 5e9, 0.05 * 5e9);
+}
+
+}  // namespace
+}  // namespace coilsim::validation
