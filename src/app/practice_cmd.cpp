@@ -5,6 +5,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include <algorithm>
+#include <memory>
+#include <optional>
+
+#include "app/format.h"
 #include "app/run_scene.h"
 #include "io/json_reader.h"
 #include "io/json_writer.h"
@@ -14,6 +19,7 @@
 #include "planning/practice.h"
 #include "planning/run_contacts.h"
 #ifdef COILSIM_HAVE_UI
+#include "app/window_setup.h"
 #include "ui/viewer.h"
 #endif
 
@@ -23,13 +29,41 @@ namespace {
 int usage(const std::string& message) {
   std::fprintf(stderr,
                "coilsim practice: %s\n"
-               "usage: coilsim practice CASE --coil NAME --input TIMELINE [--view 3d|xray|biplane] [--duration S]\n"
-               "                        [--record SESSION] [--screenshot PNG] --out SCORE\n"
+               "usage: coilsim practice CASE --coil NAME --input TIMELINE [--view 3d|xray|biplane] [--views T:VIEW,...]\n"
+               "                        [--duration S] [--record SESSION] [--screenshot PNG] --out SCORE\n"
                "       coilsim practice CASE --replay SESSION [--screenshot PNG] --out SCORE\n"
-               "       coilsim practice CASE --window [--coil NAME] [--view 3d|xray|biplane]\n"
+               "       coilsim practice CASE --window [--coil NAME] [--view 3d|xray|biplane] [--record SESSION]\n"
+               "                        [--out SCORE] [--input TIMELINE] [--views T:VIEW,...] [--duration S]\n"
+               "                        [--screenshot PNG]\n"
                "(docs/planning.md)\n",
                message.c_str());
   return kExitUsage;
+}
+
+// "0.5:xray,2:3d" -> view switches at their times, in time order.
+bool parseViews(const std::string& text, std::vector<std::pair<double, std::string>>& out, std::string& why) {
+  size_t at = 0;
+  while (at <= text.size()) {
+    const size_t comma = std::min(text.find(',', at), text.size());
+    const std::string item = text.substr(at, comma - at);
+    const size_t colon = item.find(':');
+    double t = 0;
+    const auto [end, ec] = colon == std::string::npos ? std::from_chars_result{nullptr, std::errc::invalid_argument}
+                                                       : std::from_chars(item.data(), item.data() + colon, t);
+    const std::string view = colon == std::string::npos ? "" : item.substr(colon + 1);
+    if (ec != std::errc() || end != item.data() + colon || !(t >= 0) || !std::isfinite(t) ||
+        (view != "3d" && view != "xray" && view != "biplane")) {
+      why = "--views needs T:VIEW,... (seconds >= 0, view 3d, xray or biplane), got \"" + item + "\"";
+      return false;
+    }
+    if (!out.empty() && t < out.back().first) {
+      why = "--views must be in time order, got " + item + " after " + fmt("%g", out.back().first);
+      return false;
+    }
+    out.emplace_back(t, view);
+    at = comma + 1;
+  }
+  return true;
 }
 
 #ifdef COILSIM_HAVE_UI
@@ -42,14 +76,129 @@ ui::ViewerOptions practiceViewer(const planning::PracticeCase& pc, const plannin
   v.view = view;
   const Deployment dep = session.deployment();
   v.addDrawData = [dep](const Model& m, const State& s, DrawData& d) { planning::appendInactiveCatheter(m, s, dep, d); };
-  auto live = std::make_shared<planning::LiveReadouts>(pc, dep);
-  v.readouts.title = "Practice: " + pc.name;
-  v.readouts.compute = [live](const Model& m, const State& s) {
-    std::vector<ui::Readout> out;
-    for (const planning::LiveLine& l : live->lines(m, s)) out.push_back({l.label, l.value, l.warning});
+  v.readouts = liveReadouts(pc.sac, dep, pc.goal.maxWallForce, "Practice: " + pc.name);
+  v.deployment = ui::DeploymentSetup{dep, session.deploymentState(), {}};
+  return v;
+}
+
+// Where a window session's recording and score sheet go when it closes.
+struct WindowOutputs {
+  std::string record, out;
+  int exitCode = kExitOk;
+};
+
+// Records every input of a window session and keeps its score from the
+// window's own steps (planning::SessionScorer, the hooks PracticeSession
+// calls); writes the session and the score sheet when the window closes.
+class WindowScorer : public ui::RunObserver {
+ public:
+  WindowScorer(const planning::PracticeCase& pc, const std::string& coil, const Deployment& dep, double dt,
+               std::shared_ptr<WindowOutputs> outputs)
+      : pc_(pc), coil_(coil), dep_(dep), dt_(dt), outputs_(std::move(outputs)) {
+    restarted();
+  }
+  DeviceCommand adjust(const DeviceCommand& given) override { return planning::asRecorded(given); }
+  void accepted(double t, const DeviceCommand& given, const DeviceCommand& applied) override {
+    scorer_->commandAccepted(t, planning::commandJson({t, given}), applied);
+  }
+  void viewChanged(double t, const std::string& view) override { scorer_->viewChanged(t, view); }
+  void beforeDevice(const DeploymentState& ds) override { scorer_->beforeDevice(ds); }
+  void afterDevice(const State& s, const DeploymentState& ds) override { scorer_->afterDevice(s, ds); }
+  void afterStep(const Model& m, const State& s, const DeploymentState& ds, bool ok, const std::string& why) override {
+    scorer_->afterStep(m, s, ds, ok, why);
+  }
+  // Reset: a new session from the start.
+  void restarted() override { scorer_.emplace(pc_, coil_, dep_, dt_); }
+  // The session so far, for the panel.
+  std::vector<ui::Readout> lines() const {
+    const planning::ScoreSheet& s = scorer_->running();
+    return {{"session time", fmt("%.1f s", scorer_->time()), false},
+            {"fluoroscopy time", fmt("%.1f s", s.fluoroscopyTime), false},
+            {"repositionings", std::to_string(s.repositionings), false},
+            {"recording", outputs_->record.empty() ? std::string("off (--record SESSION)") : outputs_->record, false}};
+  }
+  void closed(const Model& m, const State& s, const DeploymentState& ds) override {
+    const planning::ScoreSheet score = scorer_->finish(m, s, ds);
+    if (!outputs_->record.empty()) io::writeFileAtomic(outputs_->record, io::formatJson(scorer_->recording(scorer_->time())));
+    const std::string text = io::formatJson(planning::scoreJson(score));
+    if (!outputs_->out.empty()) io::writeFileAtomic(outputs_->out, text);
+    std::fputs(text.c_str(), stdout);
+    if (!score.ok) {
+      std::fprintf(stderr, "coilsim practice: %s\n", score.error.c_str());
+      outputs_->exitCode = kExitFailure;
+    }
+  }
+
+ private:
+  const planning::PracticeCase& pc_;
+  std::string coil_;
+  Deployment dep_;
+  double dt_;
+  std::shared_ptr<WindowOutputs> outputs_;
+  std::optional<planning::SessionScorer> scorer_;
+};
+
+// The window's setup for one coil of the case: model, deployment, read-outs, scorer.
+ui::SceneSetup practiceSetup(const planning::PracticeCase& pc, const std::string& coil, std::shared_ptr<WindowOutputs> outputs) {
+  const planning::PracticeSession session(pc, coil);
+  ui::SceneSetup s;
+  s.model = session.model();
+  s.state = session.state();
+  ui::ViewerOptions v = practiceViewer(pc, session, "3d");
+  s.deployment = v.deployment;
+  s.draw = v.addDrawData;
+  const auto scorer = std::make_shared<WindowScorer>(pc, coil, session.deployment(), session.model().timeStep, outputs);
+  s.observer = scorer;
+  // The live read-outs, then the session's own figures.
+  s.readouts.title = v.readouts.title;
+  s.readouts.compute = [live = v.readouts.compute, scorer](const Model& m, const State& st) {
+    std::vector<ui::Readout> out = live(m, st);
+    for (ui::Readout& r : scorer->lines()) out.push_back(std::move(r));
     return out;
   };
-  return v;
+  s.loaded = "loaded " + coil + "; the session starts again";
+  return s;
+}
+
+// By hand in the window: the case's coils in the panel, the case's catheter,
+// every input recorded and scored (scripted inputs, --input and --views, go
+// through the same path as the keys).
+int practiseInWindow(const planning::PracticeCase& pc, std::string coil, const std::string& view,
+                     const std::vector<TimedCommand>& script, const std::vector<std::pair<double, std::string>>& views,
+                     double duration, const std::string& screenshot, std::shared_ptr<WindowOutputs> outputs) {
+  if (coil.empty()) coil = pc.coils.front().name;
+  const ui::SceneSetup first = practiceSetup(pc, coil, outputs);
+  ui::ViewerOptions v;
+  v.scenePath = pc.name;
+  v.view = view;
+  v.deployment = first.deployment;
+  v.addDrawData = first.draw;
+  v.readouts = first.readouts;
+  v.observer = first.observer;
+  // X-ray views only, as in the procedure, when the session starts in one.
+  v.xrayOnly = planning::fluoroscopic(view);
+  v.effectsLocked = "The case fixes the physics (a recording must replay it).";
+  ui::SetupChoices choices;
+  for (size_t i = 0; i < pc.coils.size(); ++i) {
+    choices.coils.push_back(coilLabel(pc.coils[i]));
+    if (pc.coils[i].name == coil) choices.coil = int(i);
+  }
+  choices.catheters = {"the case's catheter"};
+  choices.catheter = 0;
+  choices.catheterFixed = true;
+  choices.coilNote = "the case's coil set; choosing one starts the session again";
+  choices.catheterNote = "the case fixes the catheter position and tip";
+  choices.build = [&pc, outputs](int c, int) { return practiceSetup(pc, pc.coils.at(size_t(c)).name, outputs); };
+  v.setup = choices;
+  for (const TimedCommand& c : script) v.script.push_back({c.time, c.command, ""});
+  for (const auto& [t, name] : views) v.script.push_back({t, std::nullopt, name});
+  std::stable_sort(v.script.begin(), v.script.end(), [](const auto& a, const auto& b) { return a.time < b.time; });
+  if (duration > 0) v.runSeconds = duration;
+  v.windowScreenshotPath = screenshot;
+  Model model = first.model;
+  State state = first.state;
+  const int code = ui::runWindow(model, state, v);
+  return code != kExitOk ? code : outputs->exitCode;
 }
 #endif
 
@@ -57,6 +206,7 @@ ui::ViewerOptions practiceViewer(const planning::PracticeCase& pc, const plannin
 
 int runPractice(const std::vector<std::string>& args) {
   std::string casePath, coil, input, view = "3d", record, replay, out, screenshot;
+  std::vector<std::pair<double, std::string>> views;
   bool window = false;
   double duration = 0;
   for (size_t i = 0; i < args.size(); ++i) {
@@ -78,6 +228,10 @@ int runPractice(const std::vector<std::string>& args) {
     } else if (a == "--view") {
       if (!value(view) || (view != "3d" && view != "xray" && view != "biplane"))
         return usage("--view needs 3d, xray or biplane, got \"" + view + "\"");
+    } else if (a == "--views") {
+      std::string why;
+      if (!value(v)) return usage("--views needs T:VIEW,... e.g. 0.5:xray,2:3d");
+      if (!parseViews(v, views, why)) return usage(why);
     } else if (a == "--duration") {
       const auto [end, ec] = value(v) ? std::from_chars(v.data(), v.data() + v.size(), duration)
                                       : std::from_chars_result{nullptr, std::errc::invalid_argument};
@@ -102,26 +256,24 @@ int runPractice(const std::vector<std::string>& args) {
   if (window || !screenshot.empty()) return usage("this build has no window or screenshots (no ui layer)");
 #endif
   if (window) {
-    if (!input.empty() || !replay.empty() || !record.empty() || !out.empty() || !screenshot.empty())
-      return usage("--window practises by hand: drop --input, --replay, --record, --out and --screenshot");
+    if (!replay.empty()) return usage("--window practises by hand; --replay plays a session headless: drop one");
   } else if (out.empty()) {
     return usage("practice needs --out SCORE (or --window)");
   }
   if (!window && replay.empty() == input.empty()) return usage("give either --input TIMELINE (play) or --replay SESSION");
-  if (!replay.empty() && (!coil.empty() || !record.empty() || duration > 0 || view != "3d"))
-    return usage("--replay takes the coil, views and duration from the session; drop --coil, --record, --view, --duration");
+  if (!replay.empty() && (!coil.empty() || !record.empty() || duration > 0 || view != "3d" || !views.empty()))
+    return usage("--replay takes the coil, views and duration from the session; drop --coil, --record, --view, --views, "
+                 "--duration");
   try {
     const planning::PracticeCase pc = planning::loadCase(casePath);
 #ifdef COILSIM_HAVE_UI
     if (window) {
-      // By hand in the window, with the live read-outs. The window steps its own copy of the
-      // model with its own device controls: no score sheet here (scripted sessions give one).
-      const planning::PracticeSession session(pc, coil.empty() ? pc.coils.front().name : coil);
-      Model model = session.model();
-      State state = session.state();
-      ui::ViewerOptions v = practiceViewer(pc, session, view);
-      v.deployment = ui::DeploymentSetup{session.deployment(), session.deploymentState(), {}};
-      return ui::runWindow(model, state, v);
+      // By hand (or scripted, --input and --views as if typed), recorded and scored on close.
+      const std::vector<TimedCommand> script = input.empty() ? std::vector<TimedCommand>() : io::loadTimeline(input);
+      auto outputs = std::make_shared<WindowOutputs>();
+      outputs->record = record;
+      outputs->out = out;
+      return practiseInWindow(pc, coil, view, script, views, duration, screenshot, outputs);
     }
     // The last frame of a scripted session, in its last view, with the read-outs.
     std::string shotError;
@@ -144,8 +296,7 @@ int runPractice(const std::vector<std::string>& args) {
       const std::vector<TimedCommand> timeline = io::loadTimeline(input);
       // Without --duration: one second after the last command.
       if (duration == 0) duration = (timeline.empty() ? 0.0 : timeline.back().time) + 1.0;
-      std::vector<std::pair<double, std::string>> views;
-      if (view != "3d") views.emplace_back(0.0, view);
+      if (view != "3d") views.insert(views.begin(), {0.0, view});
       nlohmann::ordered_json recording;
       score = planning::playSession(pc, coil, timeline, views, duration, &recording, {}, picture);
       if (!record.empty()) io::writeFileAtomic(record, io::formatJson(recording));
