@@ -24,7 +24,7 @@ const std::string kRoot = COILSIM_SOURCE_DIR;
 Vec3 sidecarNeckPointMm(const std::string& path) {
   std::ifstream in(path);
   const nlohmann::json j = nlohmann::json::parse(in);
-  const auto& p = j.at("neck_plane").at("point_mm");
+  const auto& p = j.at("neck").at("point_mm");
   return Vec3(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
 }
 
