@@ -50,20 +50,45 @@ std::vector<CatheterChoice> catheterChoices(const io::CatheterSpec& scene) {
   return out;
 }
 
+namespace {
+
+// Net turn (deg) from the held part to the tip: the bend of an angled tip or a J, none for an S.
+double netTurnDeg(bool flexible, CatheterShape::Type type, double angleDeg) {
+  if (!flexible || type == CatheterShape::Type::Straight || type == CatheterShape::Type::S) return 0.0;
+  return angleDeg;
+}
+
+}  // namespace
+
 void applyCatheter(const CatheterChoice& choice, io::DeploymentSpec& dep) {
   if (choice.keepScene) return;
   io::CatheterSpec& c = dep.catheter;
+  // The catheter keeps its approach (the held part's axis, in the plane of
+  // the tip's direction and normal) and its tip position; the shape decides
+  // where the tip points: turned from the approach towards the scene's
+  // reference normal by the shape's net bend. So the body stays where the
+  // scene put it (in the parent vessel) and only the tip changes.
+  const Vec3 d = c.direction.normalized();
+  const Vec3 n = (c.referenceNormal - c.referenceNormal.dot(d) * d).normalized();
+  const double was = netTurnDeg(c.flexible, c.rest.type, c.rest.angleDeg) * M_PI / 180;
+  const Vec3 approach = std::cos(was) * d - std::sin(was) * n, side = std::sin(was) * d + std::cos(was) * n;
+  const double turn = netTurnDeg(choice.flexible, choice.type, choice.angleDeg) * M_PI / 180;
+  c.direction = std::cos(turn) * approach + std::sin(turn) * side;
+  c.referenceNormal = -std::sin(turn) * approach + std::cos(turn) * side;
   if (!choice.flexible) {
     c.flexible = false;
     return;
   }
   if (!c.flexible) {
     // A soft microcatheter tube (polymer E 0.3 GPa, as scenes/preshaped-catheter.json):
-    // 3 mm held behind the bends, 2 mm straight before them, beams about 0.5 mm.
+    // 1 mm held behind the bends and 1 mm straight before them (a short body keeps
+    // inside the parent vessel of a scene made for a straight stub), beams about 0.5 mm.
     c.flexible = true;
     c.innerDiameterMm = 0.7 * c.outerDiameterMm;
     c.material = {0.3, 0.4, 1.1};
-    c.heldLengthMm = 3;
+    c.heldLengthMm = 1;
+    c.freeLengthMm = 0;
+    c.beams = 0;
     c.weighting = CompositeWeighting::BendingStiffness;
   }
   c.rest.type = choice.type;
@@ -71,7 +96,7 @@ void applyCatheter(const CatheterChoice& choice, io::DeploymentSpec& dep) {
   c.rest.radiusMm = choice.radiusMm;
   const double bends = choice.type == CatheterShape::Type::Straight ? 0.0
                        : M_PI / 180 * choice.angleDeg * choice.radiusMm * (choice.type == CatheterShape::Type::S ? 2 : 1);
-  c.freeLengthMm = std::max(c.freeLengthMm, bends + 2.0);
+  c.freeLengthMm = std::max(c.freeLengthMm, bends + 1.0);
   c.beams = std::max(c.beams, int(std::ceil((c.heldLengthMm + c.freeLengthMm) / 0.5)));
 }
 

@@ -36,8 +36,10 @@ struct CatheterChoice {
 // The scene's own catheter first, then rigid straight and the flexible
 // pre-shaped tips the physics supports (straight, 45 and 90 deg, J, S).
 std::vector<CatheterChoice> catheterChoices(const io::CatheterSpec& scene);
-// Puts a choice into a deployment spec: a flexible tip keeps the scene's
-// tube if it is flexible, else takes a soft polymer tube (docs: README, "The window").
+// Puts a choice into a deployment spec: the catheter keeps its approach and
+// tip position, the tip points where the shape turns it; a flexible tip
+// keeps the scene's tube if it is flexible, else takes a soft polymer tube
+// (README, "The window, views and screenshots").
 void applyCatheter(const CatheterChoice& choice, io::DeploymentSpec& deployment);
 
 // The plain window's choice: the whole catalogue and every tip shape for

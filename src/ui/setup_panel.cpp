@@ -24,6 +24,8 @@ int combo(const char* id, const std::vector<std::string>& items, int current, co
       if (selected) ImGui::SetItemDefaultFocus();
     }
     ImGui::EndCombo();
+  } else if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("%s", preview);  // the panel is narrower than a coil's label
   }
   return picked;
 }

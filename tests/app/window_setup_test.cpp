@@ -79,6 +79,12 @@ TEST(WindowSetup, EveryCatalogueCoilAndTipShapeLoadsIntoTheDefaultScene) {
     EXPECT_EQ(dep.flexible(), k >= 2) << choices.catheters[k];
     const CatheterTip tip = catheterTip(dep, s.state, s.deployment->initial);
     EXPECT_NEAR(tip.restAngle * 180 / M_PI, expectedDeg[k], 1e-6) << choices.catheters[k];
+    if (!dep.flexible()) continue;
+    // The body keeps the scene's approach: the held base runs along the scene's
+    // (straight) catheter direction, so it stays in the parent vessel.
+    const std::vector<Vec3>& x = s.state.rods[size_t(dep.chainRod)].x;
+    const Vec3 approach = scene.deployment->catheter.direction.normalized();
+    EXPECT_GT((x[1] - x[0]).normalized().dot(approach), 1 - 1e-9) << choices.catheters[k];
   }
 }
 
