@@ -62,7 +62,7 @@ void Session::setObserver(std::shared_ptr<RunObserver> observer) {
 }
 
 void Session::setView(const std::string& view) {
-  if (view == view_) return;
+  if (view == view_ || (xrayOnly_ && view == "3d")) return;
   view_ = view;
   if (observer_) observer_->viewChanged(deviceTime(), view_);
 }

@@ -125,6 +125,8 @@ class Session {
   // passed to the observer with the session time.
   void setView(const std::string& view);
   const std::string& view() const { return view_; }
+  // X-ray views only (practice as in the procedure): a switch to "3d" is ignored.
+  void setXrayOnly(bool on) { xrayOnly_ = on; }
   // Scripted inputs, given in order at their times (restart with reset()).
   void setScript(std::vector<ScriptedInput> script);
   bool scriptDone() const { return scriptNext_ >= script_.size(); }
@@ -179,6 +181,7 @@ class Session {
   std::deque<std::string> deviceMessages_;
   std::shared_ptr<RunObserver> observer_;
   std::string view_ = "3d";
+  bool xrayOnly_ = false;
   std::vector<ScriptedInput> script_;
   size_t scriptNext_ = 0;
   bool colourByMoment_ = false;

@@ -70,6 +70,7 @@ int runWindow(const Model& model, State& state, const ViewerOptions& options) {
   Views views(*mode);
   views.setXrayOnly(options.xrayOnly);
   session.setView(render::viewModeName(views.mode()));
+  session.setXrayOnly(options.xrayOnly);
   session.setObserver(options.observer);
   session.setScript(options.script);
   PanelContext panel;

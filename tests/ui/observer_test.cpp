@@ -179,6 +179,23 @@ TEST(SetupChoice, ALoadedSetupReplacesTheRunAFailedOneKeepsIt) {
   EXPECT_NEAR(session.deploymentState().deployed, 6e-3, 1e-9);
 }
 
+TEST(RunObserver, XrayOnlySessionIgnoresAScripted3dView) {
+  const Scene sc = makeScene();
+  Session session(sc.model, sc.start);
+  session.attachDeployment({sc.dep, sc.ds0, {}});
+  session.setView("biplane");
+  session.setXrayOnly(true);
+  auto log = std::make_shared<Log>();
+  session.setObserver(log);
+  session.setScript({{0.05, std::nullopt, "3d"}, {0.1, std::nullopt, "xray"}});
+  session.stepMany(200);
+  EXPECT_EQ(session.view(), "xray");
+  // Every step in an X-ray view: the switch to 3D never happened.
+  EXPECT_EQ(log->fluoroSteps, 200);
+  ASSERT_EQ(log->views.size(), 2u);
+  EXPECT_EQ(log->views[1], std::make_pair(0.1, std::string("xray")));
+}
+
 TEST(Views, XrayOnlyRefusesThe3dView) {
   Views views(render::ViewMode::Biplane);
   views.setXrayOnly(true);
