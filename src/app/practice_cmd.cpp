@@ -1,19 +1,20 @@
-// `coilsim practice`: scripted or replayed practice sessions and their score sheets.
+// `coilsim practice`: scripted, replayed or windowed (practice_window.cpp) sessions and their score sheets.
 #include "app/practice_cmd.h"
 
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
+#include "app/format.h"
 #include "app/run_scene.h"
 #include "io/json_reader.h"
 #include "io/json_writer.h"
 #include "io/timeline.h"
 #include "planning/case_file.h"
-#include "planning/live_readouts.h"
 #include "planning/practice.h"
-#include "planning/run_contacts.h"
 #ifdef COILSIM_HAVE_UI
+#include "app/practice_window.h"
 #include "ui/viewer.h"
 #endif
 
@@ -23,40 +24,48 @@ namespace {
 int usage(const std::string& message) {
   std::fprintf(stderr,
                "coilsim practice: %s\n"
-               "usage: coilsim practice CASE --coil NAME --input TIMELINE [--view 3d|xray|biplane] [--duration S]\n"
-               "                        [--record SESSION] [--screenshot PNG] --out SCORE\n"
+               "usage: coilsim practice CASE --coil NAME --input TIMELINE [--view 3d|xray|biplane] [--views T:VIEW,...]\n"
+               "                        [--duration S] [--record SESSION] [--screenshot PNG] --out SCORE\n"
                "       coilsim practice CASE --replay SESSION [--screenshot PNG] --out SCORE\n"
-               "       coilsim practice CASE --window [--coil NAME] [--view 3d|xray|biplane]\n"
+               "       coilsim practice CASE --window [--coil NAME] [--view 3d|xray|biplane] [--record SESSION]\n"
+               "                        [--out SCORE] [--input TIMELINE] [--views T:VIEW,...] [--duration S]\n"
+               "                        [--screenshot PNG]\n"
                "(docs/planning.md)\n",
                message.c_str());
   return kExitUsage;
 }
 
-#ifdef COILSIM_HAVE_UI
-// The window (or an off-screen picture) of a practice session's model and
-// state, with the live read-outs: packing, protrusion and wall-force warnings.
-ui::ViewerOptions practiceViewer(const planning::PracticeCase& pc, const planning::PracticeSession& session,
-                                 const std::string& view) {
-  ui::ViewerOptions v;
-  v.scenePath = pc.name + " - " + session.runningScore().coil;
-  v.view = view;
-  const Deployment dep = session.deployment();
-  v.addDrawData = [dep](const Model& m, const State& s, DrawData& d) { planning::appendInactiveCatheter(m, s, dep, d); };
-  auto live = std::make_shared<planning::LiveReadouts>(pc, dep);
-  v.readouts.title = "Practice: " + pc.name;
-  v.readouts.compute = [live](const Model& m, const State& s) {
-    std::vector<ui::Readout> out;
-    for (const planning::LiveLine& l : live->lines(m, s)) out.push_back({l.label, l.value, l.warning});
-    return out;
-  };
-  return v;
+// "0.5:xray,2:3d" -> view switches at their times, in time order.
+bool parseViews(const std::string& text, std::vector<std::pair<double, std::string>>& out, std::string& why) {
+  size_t at = 0;
+  while (at <= text.size()) {
+    const size_t comma = std::min(text.find(',', at), text.size());
+    const std::string item = text.substr(at, comma - at);
+    const size_t colon = item.find(':');
+    double t = 0;
+    const auto [end, ec] = colon == std::string::npos ? std::from_chars_result{nullptr, std::errc::invalid_argument}
+                                                       : std::from_chars(item.data(), item.data() + colon, t);
+    const std::string view = colon == std::string::npos ? "" : item.substr(colon + 1);
+    if (ec != std::errc() || end != item.data() + colon || !(t >= 0) || !std::isfinite(t) ||
+        (view != "3d" && view != "xray" && view != "biplane")) {
+      why = "--views needs T:VIEW,... (seconds >= 0, view 3d, xray or biplane), got \"" + item + "\"";
+      return false;
+    }
+    if (!out.empty() && t < out.back().first) {
+      why = "--views must be in time order, got " + item + " after " + fmt("%g", out.back().first);
+      return false;
+    }
+    out.emplace_back(t, view);
+    at = comma + 1;
+  }
+  return true;
 }
-#endif
 
 }  // namespace
 
 int runPractice(const std::vector<std::string>& args) {
   std::string casePath, coil, input, view = "3d", record, replay, out, screenshot;
+  std::vector<std::pair<double, std::string>> views;
   bool window = false;
   double duration = 0;
   for (size_t i = 0; i < args.size(); ++i) {
@@ -78,6 +87,10 @@ int runPractice(const std::vector<std::string>& args) {
     } else if (a == "--view") {
       if (!value(view) || (view != "3d" && view != "xray" && view != "biplane"))
         return usage("--view needs 3d, xray or biplane, got \"" + view + "\"");
+    } else if (a == "--views") {
+      std::string why;
+      if (!value(v)) return usage("--views needs T:VIEW,... e.g. 0.5:xray,2:3d");
+      if (!parseViews(v, views, why)) return usage(why);
     } else if (a == "--duration") {
       const auto [end, ec] = value(v) ? std::from_chars(v.data(), v.data() + v.size(), duration)
                                       : std::from_chars_result{nullptr, std::errc::invalid_argument};
@@ -102,26 +115,24 @@ int runPractice(const std::vector<std::string>& args) {
   if (window || !screenshot.empty()) return usage("this build has no window or screenshots (no ui layer)");
 #endif
   if (window) {
-    if (!input.empty() || !replay.empty() || !record.empty() || !out.empty() || !screenshot.empty())
-      return usage("--window practises by hand: drop --input, --replay, --record, --out and --screenshot");
+    if (!replay.empty()) return usage("--window practises by hand; --replay plays a session headless: drop one");
   } else if (out.empty()) {
     return usage("practice needs --out SCORE (or --window)");
   }
   if (!window && replay.empty() == input.empty()) return usage("give either --input TIMELINE (play) or --replay SESSION");
-  if (!replay.empty() && (!coil.empty() || !record.empty() || duration > 0 || view != "3d"))
-    return usage("--replay takes the coil, views and duration from the session; drop --coil, --record, --view, --duration");
+  if (!replay.empty() && (!coil.empty() || !record.empty() || duration > 0 || view != "3d" || !views.empty()))
+    return usage("--replay takes the coil, views and duration from the session; drop --coil, --record, --view, --views, "
+                 "--duration");
   try {
     const planning::PracticeCase pc = planning::loadCase(casePath);
 #ifdef COILSIM_HAVE_UI
     if (window) {
-      // By hand in the window, with the live read-outs. The window steps its own copy of the
-      // model with its own device controls: no score sheet here (scripted sessions give one).
-      const planning::PracticeSession session(pc, coil.empty() ? pc.coils.front().name : coil);
-      Model model = session.model();
-      State state = session.state();
-      ui::ViewerOptions v = practiceViewer(pc, session, view);
-      v.deployment = ui::DeploymentSetup{session.deployment(), session.deploymentState(), {}};
-      return ui::runWindow(model, state, v);
+      // By hand (or scripted, --input and --views as if typed), recorded and scored on close.
+      const std::vector<TimedCommand> script = input.empty() ? std::vector<TimedCommand>() : io::loadTimeline(input);
+      auto outputs = std::make_shared<WindowOutputs>();
+      outputs->record = record;
+      outputs->out = out;
+      return practiseInWindow(pc, coil, view, script, views, duration, screenshot, outputs);
     }
     // The last frame of a scripted session, in its last view, with the read-outs.
     std::string shotError;
@@ -144,8 +155,7 @@ int runPractice(const std::vector<std::string>& args) {
       const std::vector<TimedCommand> timeline = io::loadTimeline(input);
       // Without --duration: one second after the last command.
       if (duration == 0) duration = (timeline.empty() ? 0.0 : timeline.back().time) + 1.0;
-      std::vector<std::pair<double, std::string>> views;
-      if (view != "3d") views.emplace_back(0.0, view);
+      if (view != "3d") views.insert(views.begin(), {0.0, view});
       nlohmann::ordered_json recording;
       score = planning::playSession(pc, coil, timeline, views, duration, &recording, {}, picture);
       if (!record.empty()) io::writeFileAtomic(record, io::formatJson(recording));

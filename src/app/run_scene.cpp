@@ -18,6 +18,8 @@
 #include "physics/state.h"
 
 #ifdef COILSIM_HAVE_UI
+#include "app/window_setup.h"
+#include "planning/case_file.h"
 #include "ui/viewer.h"
 #endif
 
@@ -250,12 +252,24 @@ int run(const RunOptions& o) {
     if (o.steps) v.runSeconds = double(*o.steps) * model.timeStep;
     if (o.durationS) v.runSeconds = *o.durationS;
     // The window plays the timeline as the headless run does (ui::Session).
-    if (compiled.deployment) v.deployment = ui::DeploymentSetup{*compiled.deployment, deployment, timeline};
-    v.finalDeployment = &deployment;
-    const int code = ui::runWindow(model, state, v);
     if (compiled.deployment) {
+      v.deployment = ui::DeploymentSetup{*compiled.deployment, deployment, timeline};
+      // Packing, protrusion and wall-force warnings live when an obstacle is a phantom with its sac.
+      std::string note;
+      const std::optional<planning::Sac> sac = planning::sceneSac(spec, note);
+      if (sac) v.readouts = liveReadouts(*sac, *compiled.deployment, planning::Goal{}.maxWallForce, "Aneurysm read-outs");
+      std::printf("coilsim: live read-outs: %s\n", sac ? note.c_str() : ("none: " + note).c_str());
+      v.setup = sceneSetupChoices(spec, sac);
+    }
+    v.finalDeployment = &deployment;
+    // A coil or catheter chosen in the panel replaces the model and the deployment.
+    std::optional<Deployment> finalSetup = compiled.deployment;
+    v.finalModel = &model;
+    v.finalDeploymentSetup = &finalSetup;
+    const int code = ui::runWindow(model, state, v);
+    if (finalSetup) {
       record.deployment = deployment;
-      record.catheterTip = catheterTip(*compiled.deployment, state, deployment);
+      record.catheterTip = catheterTip(*finalSetup, state, deployment);
     }
     return writeOut(o, model, state, record) ? code : kExitUsage;
 #else

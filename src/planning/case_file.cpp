@@ -50,12 +50,8 @@ Sac readSac(const JsonNode& n) {
   const int given = int(n.has("phantom")) + int(n.has("mesh")) + int(n.has("sphere"));
   if (given != 1) n.fail("give exactly one of \"phantom\", \"mesh\" and \"sphere\"");
   if (n.has("phantom")) {
-    // A generated phantom: its surface, and the neck plane from its sidecar (mm).
     if (n.has("neck_plane")) n.child("neck_plane").fail("a phantom's neck plane comes from its sidecar; drop \"neck_plane\"");
-    const std::string stl = besideFile(n.file(), n.child("phantom").string());
-    const geometry::PhantomInfo info = io::readPhantomSidecar(io::phantomSidecarPath(stl));
-    auto mesh = std::make_shared<TriangleMesh>(io::loadMeshFile(stl));
-    return makeSac(std::move(mesh), Plane{units::mmToM(1.0) * info.neck.point, info.neck.normal});
+    return phantomSac(besideFile(n.file(), n.child("phantom").string()));
   }
   const Plane neck = readNeckPlane(n.child("neck_plane"));
   if (n.has("mesh")) {
@@ -70,6 +66,33 @@ Sac readSac(const JsonNode& n) {
   const int level = s.has("subdivisions") ? int(s.child("subdivisions").integer(1, 6)) : 5;
   if (std::abs(neck.signedDistance(centre)) >= radius) n.child("neck_plane").fail("the neck plane does not cut the sac sphere");
   return makeSac(std::make_shared<TriangleMesh>(makeIcosphere(centre, radius, level, "sac sphere")), neck);
+}
+
+Sac phantomSac(const std::string& stl) {
+  // A generated phantom: its surface, and the neck plane from its sidecar (mm).
+  const geometry::PhantomInfo info = io::readPhantomSidecar(io::phantomSidecarPath(stl));
+  auto mesh = std::make_shared<TriangleMesh>(io::loadMeshFile(stl));
+  return makeSac(std::move(mesh), Plane{units::mmToM(1.0) * info.neck.point, info.neck.normal});
+}
+
+std::optional<Sac> sceneSac(const io::SceneSpec& scene, std::string& note) {
+  note = "no obstacle of the scene is a phantom with a sidecar (coilsim phantom writes NAME.phantom.json)";
+  for (const io::ObstacleSpec& o : scene.obstacles) {
+    const std::string sidecar = io::phantomSidecarPath(o.meshPath);
+    if (sidecar == o.meshPath || !std::filesystem::exists(sidecar)) continue;
+    if (o.rotationDeg != Vec3::Zero()) {
+      note = sidecar + ": the obstacle \"" + o.name + "\" is rotated; its sidecar's neck plane is not, so no read-outs";
+      continue;
+    }
+    const geometry::PhantomInfo info = io::readPhantomSidecar(sidecar);
+    // The mesh placed as the scene places it; the neck plane moved with it
+    // (the sidecar is in the STL's own millimetres).
+    const Obstacle placed = io::compileObstacles({o}, scene.file).front();
+    const Vec3 point = units::mmToM(1.0) * (o.scaleToMm * info.neck.point + o.offsetMm);
+    note = "sac and neck plane of " + sidecar;
+    return makeSac(placed.mesh, Plane{point, info.neck.normal});
+  }
+  return std::nullopt;
 }
 
 PracticeCase parseCase(const nlohmann::json& document, const std::string& file) {

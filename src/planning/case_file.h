@@ -4,6 +4,7 @@
 // plane), the catheter position (the scene's), the coil set a trainee or a
 // plan may use, and the goal. Read through the io layer; errors are
 // io::InputErrors naming the file, the JSON path and what was expected.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,17 @@ PracticeCase parseCase(const nlohmann::json& document, const std::string& file);
 
 // The project's coil catalogue directory (assets/coils of the source tree).
 std::string defaultCatalogue();
+
+// The sac of a phantom STL made by `coilsim phantom`: its surface and the
+// neck plane of its sidecar (io::phantomSidecarPath). Throws InputError
+// naming the file when either cannot be read.
+Sac phantomSac(const std::string& stlPath);
+
+// The sac of a scene, for live read-outs in a plain window: the first
+// obstacle whose mesh has a phantom sidecar, placed as the scene places it
+// (scale, rotation, offset). Empty when no obstacle has one; `note` then
+// says why (or names the sidecar used).
+std::optional<Sac> sceneSac(const io::SceneSpec& scene, std::string& note);
 
 // A sac from a stand-alone JSON file holding a "sac" block at its root
 // ({"sac": {...}}), for `coilsim plan SCENE --sac FILE`.

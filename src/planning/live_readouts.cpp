@@ -19,10 +19,13 @@ std::string format(const char* f, double v) {
 }  // namespace
 
 LiveReadouts::LiveReadouts(const PracticeCase& pc, const Deployment& dep)
-    : sac_(makeSac(pc.sac.mesh, pc.sac.neck)),
+    : LiveReadouts(pc.sac, dep, pc.goal.maxWallForce) {}
+
+LiveReadouts::LiveReadouts(const Sac& sac, const Deployment& dep, double wallForceLimit)
+    : sac_(makeSac(sac.mesh, sac.neck)),
       chainRod_(dep.chainRod),
       catheterNodes_(dep.tipNode),
-      threshold_(pc.goal.maxWallForce) {
+      threshold_(wallForceLimit) {
   sacVolume_ = volumeOnSide(*sac_.mesh, sac_.neck);
   neck_ = sampleNeck(sac_);
 }

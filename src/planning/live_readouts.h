@@ -22,6 +22,8 @@ class LiveReadouts {
  public:
   // `dep` names the chain: its nodes before the tip node are catheter; the coil line starts at the tip.
   LiveReadouts(const PracticeCase& practiceCase, const Deployment& dep);
+  // Any sac (a scene's phantom, sceneSac), warning above `wallForceLimit` N.
+  LiveReadouts(const Sac& sac, const Deployment& dep, double wallForceLimit);
   // The lines for this state. The sac metrics are recomputed at most every
   // `interval` s of simulated time (they walk every segment); the wall load
   // every call.

@@ -5,10 +5,11 @@
 // Replaying the recording runs the same steps with the same inputs, so it
 // reproduces the score sheet bit for bit.
 //
-// For the window (ui): construct a PracticeSession from a loaded case, call
-// command() and setView() from input handlers, step() once per simulation
-// step, read model()/state() to draw, and score() / recording() at the end.
-// Commands and views take effect at the next step().
+// The scoring and the recording live in SessionScorer (session_scorer.h),
+// which the window (coilsim practice --window) drives from its own stepping;
+// a PracticeSession steps headless: command() and setView(), then step();
+// finish() and recording() at the end. Commands and views take effect at
+// the next step().
 #include <functional>
 #include <memory>
 #include <optional>
@@ -24,35 +25,9 @@
 #include "planning/auto_deploy.h"
 #include "planning/case_file.h"
 #include "planning/metrics.h"
+#include "planning/session_scorer.h"
 
 namespace coilsim::planning {
-
-inline constexpr const char* kSessionFormat = "coilsim-session/1";
-
-struct ScoreSheet {
-  std::string caseName, coil;
-  double time = 0;                 // s of simulated procedure
-  double coilLengthPlaced = 0;     // m of coil outside the catheter at the end
-  double packingDensity = 0;
-  double neckCoverage = 0;
-  int occlusion = 3;
-  int protrusionEvents = 0;        // times the coil started protruding (sampled every 0.1 s)
-  bool protrudingAtEnd = false;
-  bool wallForcesAvailable = false;
-  double maxWallForce = 0;         // N, largest wall load lasting 5 steps (WallForceStats)
-  double timeAboveSafety = 0;      // s with some wall force above the goal's threshold
-  double maxTipForce = 0;          // N, force of the coil on the catheter tip felt with the pusher at rest
-  int repositionings = 0;          // pulls of the coil back into the catheter
-  double fluoroscopyTime = 0;      // s spent in the X-ray (xray or biplane) view
-  bool detached = false;
-  bool detachInSac = false;        // the catheter tip (detachment zone) was inside the sac at detach
-  bool goalMet = false;
-  bool ok = true;                  // false: a step was refused
-  std::string error;
-};
-
-// The score sheet as JSON ("coilsim-score/1"), in edge units (mm, mN, s).
-nlohmann::ordered_json scoreJson(const ScoreSheet& s);
 
 class PracticeSession {
  public:
@@ -79,37 +54,21 @@ class PracticeSession {
   const Deployment& deployment() const { return deployment_; }
   const DeploymentState& deploymentState() const { return ds_; }
   long steps() const { return steps_; }
-  const std::string& view() const { return view_; }  // the view looked through now
+  const std::string& view() const { return scorer_->view(); }  // the view looked through now
   double time() const { return double(steps_) * model_.timeStep; }
-  const ScoreSheet& runningScore() const { return score_; }
+  const ScoreSheet& runningScore() const { return scorer_->running(); }
 
-  // The recording: {"format": "coilsim-session/1", "case", "coil", "end_s",
-  // "timeline": <coilsim-timeline/1 document>, "views": [{"t_s", "view"}]}.
+  // The recording (SessionScorer::recording) ending now.
   nlohmann::ordered_json recording() const;
 
  private:
-  void sample();
-  const PracticeCase& case_;
-  ContactForceSource contacts_;
-  std::string coil_;
   Model model_;
   State state_;
   Deployment deployment_;
   DeploymentState ds_;
   DeploymentController controller_;
-  Sac sac_;
-  double sacVolume_ = 0;
-  NeckGrid neck_;
   long steps_ = 0;
-  long fluoroSteps_ = 0;  // steps spent in an X-ray view
-  std::string view_ = "3d";
-  bool protruding_ = false;
-  ScoreSheet score_;
-  std::vector<std::vector<double>> forces_;
-  WallForceStats wall_;
-  FeltTipForce felt_;
-  std::vector<nlohmann::ordered_json> recorded_;  // accepted commands as the timeline file holds them
-  std::vector<std::pair<double, std::string>> views_;
+  std::optional<SessionScorer> scorer_;  // built once the deployment is known
 };
 
 // A recorded session, read back.

@@ -165,7 +165,10 @@ void WindowInput::gamepad(double dt, double& push, double& twist) {
       device_.clear();
     }
     if (pressed(GLFW_GAMEPAD_BUTTON_X)) panel_.fitRequested = true;
-    if (pressed(GLFW_GAMEPAD_BUTTON_Y)) views_.setMode(nextMode(views_.mode()));
+    if (pressed(GLFW_GAMEPAD_BUTTON_Y)) {
+      const render::ViewMode next = nextMode(views_.mode());
+      views_.setMode(views_.xrayOnly() && next == render::ViewMode::Shaded ? nextMode(next) : next);
+    }
     for (int b = 0; b <= GLFW_GAMEPAD_BUTTON_LAST; ++b) buttons_[b] = pad.buttons[b];
     return;  // the first gamepad found drives the view and the device
   }

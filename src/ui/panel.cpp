@@ -100,12 +100,15 @@ void simulationSection(Session& session, PanelContext& ctx) {
 
 void viewSection(Views& views, PanelContext& ctx) {
   int mode = int(views.mode());
+  ImGui::BeginDisabled(views.xrayOnly());
   bool changed = ImGui::RadioButton("3D (1)", &mode, int(render::ViewMode::Shaded));
+  ImGui::EndDisabled();
   ImGui::SameLine();
   changed |= ImGui::RadioButton("X-ray (2)", &mode, int(render::ViewMode::XRay));
   ImGui::SameLine();
   changed |= ImGui::RadioButton("Biplane (3)", &mode, int(render::ViewMode::Biplane));
   if (changed) views.setMode(render::ViewMode(mode));
+  if (views.xrayOnly()) ImGui::TextDisabled("X-ray views only, as in the procedure");
   if (ImGui::Button("Fit to scene (F)")) ctx.fitRequested = true;
   if (views.mode() != render::ViewMode::Shaded) {
     ImGui::Text("C-arm rotation %+.0f\xc2\xb0, angulation %+.0f\xc2\xb0", views.rotationDeg(), views.angulationDeg());
@@ -128,9 +131,15 @@ void overlaySection(Session& session, PanelContext& ctx) {
   ImGui::Checkbox("contact points and forces (3D)", &o.contacts);
 }
 
-void effectsSection(Session& session) {
+void effectsSection(Session& session, const PanelContext& ctx) {
   Model& m = session.model();
   if (m.effects.empty()) ImGui::TextDisabled("no effects in this scene");
+  if (!ctx.effectsLocked.empty()) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", ctx.effectsLocked.c_str());
+    ImGui::PopTextWrapPos();
+  }
+  ImGui::BeginDisabled(!ctx.effectsLocked.empty());
   for (size_t i = 0; i < m.effects.size(); ++i) {
     EffectUse& use = m.effects[i];
     if (!use.effect) continue;
@@ -159,6 +168,7 @@ void effectsSection(Session& session) {
     }
     ImGui::PopID();
   }
+  ImGui::EndDisabled();
 }
 
 void helpSection() {
@@ -194,12 +204,15 @@ void drawPanel(Session& session, Views& views, PanelContext& ctx) {
   ImGui::Begin(title.c_str(), nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   if (ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) simulationSection(session, ctx);
   // Deployment controls (push / pull / twist / detach): see deployment_panel.cpp.
-  if (ImGui::CollapsingHeader("Deployment", ImGuiTreeNodeFlags_DefaultOpen)) drawDeploymentControls(session, ctx);
+  // Warnings (protrusion, wall force) first, where they are seen while pushing.
   if (ctx.readouts && ImGui::CollapsingHeader(ctx.readouts.title.c_str(), ImGuiTreeNodeFlags_DefaultOpen))
     drawReadouts(ctx.readouts.compute(session.model(), session.state()));
+  if (ImGui::CollapsingHeader("Deployment", ImGuiTreeNodeFlags_DefaultOpen)) drawDeploymentControls(session, ctx);
+  if (ctx.setup && ImGui::CollapsingHeader("Coil and catheter", ImGuiTreeNodeFlags_DefaultOpen))
+    drawSetupSection(*ctx.setup, ctx);
   if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) viewSection(views, ctx);
   if (ImGui::CollapsingHeader("Colours and markers")) overlaySection(session, ctx);
-  if (ImGui::CollapsingHeader("Effects", ImGuiTreeNodeFlags_DefaultOpen)) effectsSection(session);
+  if (ImGui::CollapsingHeader("Effects", ImGuiTreeNodeFlags_DefaultOpen)) effectsSection(session, ctx);
   if (ctx.interactive && ImGui::CollapsingHeader("Mouse, keys, gamepad")) helpSection();
   if (!ctx.glInfo.empty() && ctx.interactive) ImGui::TextDisabled("%s", ctx.glInfo.c_str());
   ImGui::End();

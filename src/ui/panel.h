@@ -8,6 +8,7 @@
 #include "render/renderer.h"
 #include "ui/readouts.h"
 #include "ui/session.h"
+#include "ui/setup.h"
 #include "ui/views.h"
 
 namespace coilsim::ui {
@@ -42,9 +43,14 @@ struct PanelContext {
   DeviceControls device;
   Overlays overlays;
   ReadoutHook readouts;         // optional live read-outs (planning), a section of their own
+  const SetupChoices* setup = nullptr;  // optional coil and catheter choice (window)
+  SetupStatus setupStatus;
+  std::string effectsLocked;    // non-empty: why the effect switches cannot change (practice)
   // Requests, handled by the caller after the frame.
   bool fitRequested = false;
   bool closeRequested = false;
+  bool setupRequested = false;  // a choice made in the combos: setupCoil, setupCatheter
+  int setupCoil = -1, setupCatheter = -1;
 };
 
 void drawPanel(Session& session, Views& views, PanelContext& context);

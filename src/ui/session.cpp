@@ -31,8 +31,45 @@ void Session::restartDevice() {
   deploymentState_ = deploymentSetup_->initial;
   controller_ = DeploymentController();
   timelineNext_ = 0;
+  scriptNext_ = 0;
   deviceSteps_ = 0;
   deviceMessages_.clear();
+}
+
+void Session::replace(const Model& model, const State& state, DrawDataHook hook) {
+  model_ = model;
+  initial_ = state;
+  state_ = state;
+  hook_ = std::move(hook);
+  deploymentSetup_.reset();
+  deploymentState_ = DeploymentState();
+  controller_ = DeploymentController();
+  timelineNext_ = scriptNext_ = 0;
+  deviceSteps_ = 0;
+  deviceMessages_.clear();
+  RealTimeConfig c = loop_.config();
+  c.timeStep = model.timeStep;
+  loop_ = RealTimeLoop(c);
+  playing_ = false;
+  steps_ = 0;
+  haltMessage_.clear();
+  refreshDrawData();
+}
+
+void Session::setObserver(std::shared_ptr<RunObserver> observer) {
+  observer_ = std::move(observer);
+  if (observer_) observer_->viewChanged(deviceTime(), view_);
+}
+
+void Session::setView(const std::string& view) {
+  if (view == view_ || (xrayOnly_ && view == "3d")) return;
+  view_ = view;
+  if (observer_) observer_->viewChanged(deviceTime(), view_);
+}
+
+void Session::setScript(std::vector<ScriptedInput> script) {
+  script_ = std::move(script);
+  scriptNext_ = 0;
 }
 
 void Session::note(const std::string& message) {
@@ -48,8 +85,11 @@ std::string Session::command(const DeviceCommand& c) {
     note(why);
     return why;
   }
-  const std::string why = controller_.command(deploymentSetup_->deployment, deploymentState_, c);
+  // The observer (a recorder) may round the command to what its file holds.
+  const DeviceCommand applied = observer_ ? observer_->adjust(c) : c;
+  const std::string why = controller_.command(deploymentSetup_->deployment, deploymentState_, applied);
   if (!why.empty()) note(why);
+  else if (observer_) observer_->accepted(deviceTime(), c, applied);
   return why;
 }
 
@@ -61,12 +101,20 @@ void Session::driveDevice() {
   const std::vector<TimedCommand>& timeline = deploymentSetup_->timeline;
   const double dt = model_.timeStep;
   const double t = double(deviceSteps_) * dt;
+  // Scripted user inputs, as if typed at their time (the same rule as timelines).
+  while (scriptNext_ < script_.size() && script_[scriptNext_].time <= t + 1e-9 * dt) {
+    const ScriptedInput& in = script_[scriptNext_++];
+    if (in.command) command(*in.command);
+    else setView(in.view);
+  }
   while (timelineNext_ < timeline.size() && timeline[timelineNext_].time <= t + 1e-9 * dt) {
     const std::string why = controller_.command(dep, deploymentState_, timeline[timelineNext_].command);
     if (!why.empty()) note("timeline /commands/" + std::to_string(timelineNext_) + ": " + why);
     ++timelineNext_;
   }
+  if (observer_) observer_->beforeDevice(deploymentState_);
   controller_.advance(dep, model_, state_, deploymentState_, dt);
+  if (observer_) observer_->afterDevice(state_, deploymentState_);
   for (const std::string& n : controller_.notes) note(n);
   controller_.notes.clear();
 }
@@ -77,6 +125,7 @@ bool Session::stepAndCheck() {
   driveDevice();
   ++deviceSteps_;
   const StepReport r = step(model_, state_);
+  if (observer_) observer_->afterStep(model_, state_, deploymentState_, r.ok(), r.message);
   if (!r.ok()) {
     // step() restored the state; stepping again would fail the same way.
     haltMessage_ = "step refused at t = " + std::to_string(state_.time) + " s: " + r.message;
@@ -109,6 +158,10 @@ long Session::stepMany(int count) {
 void Session::reset() {
   state_ = initial_;
   if (deploymentSetup_) restartDevice();
+  if (observer_) {
+    observer_->restarted();
+    observer_->viewChanged(0.0, view_);
+  }
   haltMessage_.clear();
   loop_.reset();
   steps_ = 0;

@@ -6,6 +6,7 @@
 // reported, never drawn. GL-free, tested in tests/ui.
 #include <deque>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,6 +33,40 @@ struct DeploymentSetup {
   Deployment deployment;
   DeploymentState initial;
   std::vector<TimedCommand> timeline;
+};
+
+// One scripted user input (tests under Xvfb drive the window with a list of
+// them): a device command or a view switch ("3d", "xray", "biplane"), given
+// at the first step starting at or after `time`, through the same path as
+// the panel, keys and gamepad (Session::command, Session::setView).
+struct ScriptedInput {
+  double time = 0;  // s
+  std::optional<DeviceCommand> command;
+  std::string view;  // used when there is no command
+};
+
+// What the app does with the inputs and steps of a window run (practice:
+// record every input and keep the score). The ui calls it; the app
+// implements it with the layers the ui must not know. Defaults do nothing.
+class RunObserver {
+ public:
+  virtual ~RunObserver() = default;
+  // A device command the user gives: the one to start instead (a recorder
+  // rounds it to the numbers its file will hold).
+  virtual DeviceCommand adjust(const DeviceCommand& given) { return given; }
+  // The controller accepted `applied` (given as `given`) at session time `t`
+  // (steps x dt: it acts from the next step on).
+  virtual void accepted(double /*t*/, const DeviceCommand& /*given*/, const DeviceCommand& /*applied*/) {}
+  // The user looks through `view` from session time `t` on (also once when attached).
+  virtual void viewChanged(double /*t*/, const std::string& /*view*/) {}
+  // Around every step: before the device moves, after it moved, after the step.
+  virtual void beforeDevice(const DeploymentState&) {}
+  virtual void afterDevice(const State&, const DeploymentState&) {}
+  virtual void afterStep(const Model&, const State&, const DeploymentState&, bool /*ok*/, const std::string& /*why*/) {}
+  // The session went back to its start (Reset); the inputs so far no longer count.
+  virtual void restarted() {}
+  // The window closes on this model and state (runWindow calls it).
+  virtual void closed(const Model&, const State&, const DeploymentState&) {}
 };
 
 class Session {
@@ -77,6 +112,26 @@ class Session {
   // Timeline commands already started.
   size_t timelineCursor() const { return timelineNext_; }
   size_t timelineSize() const { return deploymentSetup_ ? deploymentSetup_->timeline.size() : 0; }
+
+  // Replaces the model, state and draw hook (a coil or catheter chosen in
+  // the panel): the session starts again from `state`, paused, with no
+  // deployment until attachDeployment. The observer and the view stay.
+  void replace(const Model& model, const State& state, DrawDataHook hook);
+
+  // Who records the inputs and steps (may be null). It is told the current view at once.
+  void setObserver(std::shared_ptr<RunObserver> observer);
+  RunObserver* observer() const { return observer_.get(); }
+  // The view the user looks through ("3d", "xray", "biplane"); a change is
+  // passed to the observer with the session time.
+  void setView(const std::string& view);
+  const std::string& view() const { return view_; }
+  // X-ray views only (practice as in the procedure): a switch to "3d" is ignored.
+  void setXrayOnly(bool on) { xrayOnly_ = on; }
+  // Scripted inputs, given in order at their times (restart with reset()).
+  void setScript(std::vector<ScriptedInput> script);
+  bool scriptDone() const { return scriptNext_ >= script_.size(); }
+  // Session time: steps since the start (or reset) x dt, the clock of timelines and recordings.
+  double deviceTime() const { return double(deviceSteps_) * model_.timeStep; }
 
   // Why stepping stopped (a refused step), empty while healthy.
   const std::string& haltMessage() const { return haltMessage_; }
@@ -124,6 +179,11 @@ class Session {
   size_t timelineNext_ = 0;
   long deviceSteps_ = 0;  // steps since the start, the timeline's clock
   std::deque<std::string> deviceMessages_;
+  std::shared_ptr<RunObserver> observer_;
+  std::string view_ = "3d";
+  bool xrayOnly_ = false;
+  std::vector<ScriptedInput> script_;
+  size_t scriptNext_ = 0;
   bool colourByMoment_ = false;
   double momentScale_ = 0;
   double largestMoment_ = 0;

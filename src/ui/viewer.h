@@ -10,6 +10,7 @@
 #include "physics/state.h"
 #include "ui/readouts.h"
 #include "ui/session.h"
+#include "ui/setup.h"
 
 namespace coilsim::ui {
 
@@ -34,8 +35,20 @@ struct ViewerOptions {
   std::optional<DeploymentSetup> deployment;
   // Optional live read-outs in the panel (planning: packing, protrusion, wall-force warnings).
   ReadoutHook readouts;
-  // Set by runWindow on return: the deployment's state when the window closed.
+  // Window: coil and catheter choice in the panel, built by the app.
+  std::optional<SetupChoices> setup;
+  // Window: who records the user's inputs and the steps (practice), told when the window closes.
+  std::shared_ptr<RunObserver> observer;
+  // Window: user inputs given at their times as if typed (tests under Xvfb).
+  std::vector<ScriptedInput> script;
+  bool xrayOnly = false;        // window: no 3D view (practice in the X-ray views only)
+  std::string effectsLocked;    // window: why the effect switches are fixed (practice: the case's physics)
+  // Set by runWindow on return (when not null): the deployment's state, the
+  // model and the deployment when the window closed (a coil or catheter
+  // chosen in the panel replaces the ones passed in).
   DeploymentState* finalDeployment = nullptr;
+  Model* finalModel = nullptr;
+  std::optional<Deployment>* finalDeploymentSetup = nullptr;
 };
 
 // Opens the window and runs the real-time loop until the user closes it (or

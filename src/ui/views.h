@@ -12,7 +12,12 @@ class Views {
   explicit Views(render::ViewMode mode = render::ViewMode::Shaded) : mode_(mode) {}
 
   render::ViewMode mode() const { return mode_; }
-  void setMode(render::ViewMode mode) { mode_ = mode; }
+  // Ignored for the 3D view while X-ray only (practice as in the real procedure).
+  void setMode(render::ViewMode mode) {
+    if (!(xrayOnly_ && mode == render::ViewMode::Shaded)) mode_ = mode;
+  }
+  void setXrayOnly(bool on) { xrayOnly_ = on; }
+  bool xrayOnly() const { return xrayOnly_; }
   // The camera of the current mode (the frontal one in biplane).
   render::Camera& camera() { return mode_ == render::ViewMode::Shaded ? shaded_ : xray_; }
   const render::Camera& camera() const { return mode_ == render::ViewMode::Shaded ? shaded_ : xray_; }
@@ -32,6 +37,7 @@ class Views {
   render::Camera shaded_;
   render::Camera xray_ = render::apView(render::Camera{});
   bool fitted_ = false;
+  bool xrayOnly_ = false;
 };
 
 }  // namespace coilsim::ui

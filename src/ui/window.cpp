@@ -68,9 +68,23 @@ int runWindow(const Model& model, State& state, const ViewerOptions& options) {
   Session session(model, state, options.addDrawData);
   if (options.deployment) session.attachDeployment(*options.deployment);
   Views views(*mode);
+  views.setXrayOnly(options.xrayOnly);
+  session.setView(render::viewModeName(views.mode()));
+  session.setXrayOnly(options.xrayOnly);
+  session.setObserver(options.observer);
+  session.setScript(options.script);
   PanelContext panel;
   panel.sceneName = options.scenePath;
   panel.readouts = options.readouts;
+  panel.effectsLocked = options.effectsLocked;
+  std::optional<SetupChoices> setup = options.setup;
+  if (setup) panel.setup = &*setup;
+  // The view the user switched to (keys, panel, gamepad) goes to the session
+  // (and its observer); a scripted switch comes back from it.
+  auto userView = [&] { session.setView(render::viewModeName(views.mode())); };
+  auto scriptView = [&] {
+    if (const auto m = render::parseViewMode(session.view()); m && *m != views.mode()) views.setMode(*m);
+  };
   panel.glInfo = render::glDescription();
   render::RenderSettings settings;
   settings.samples = options.samples >= 0 ? options.samples : (render::softwareRenderer() ? 0 : 4);
@@ -99,8 +113,10 @@ int runWindow(const Model& model, State& state, const ViewerOptions& options) {
     last = now;
     const int fbw = backend->framebufferWidth(), fbh = backend->framebufferHeight();
     input.update(dt, imgui.wantsMouse(), imgui.wantsKeyboard());
+    userView();
 
     panel.lastAdvance = session.advance(dt, wallSeconds);
+    scriptView();
 
     closing = glfwWindowShouldClose(window) || panel.closeRequested;
     if (scripted) {
@@ -129,6 +145,14 @@ int runWindow(const Model& model, State& state, const ViewerOptions& options) {
       break;
     }
     renderer.present(fbw, fbh);
+    userView();
+    if (setup && panel.setupRequested) {
+      panel.setupRequested = false;
+      if (applySetup(*setup, panel.setupCoil, panel.setupCatheter, session, panel)) {
+        session.setPlaying(false);
+        panel.fitRequested = true;
+      }
+    }
     panel.renderSeconds = wallSeconds() - drawStart;
     panel.frameSeconds = dt;
     if (input.screenshotRequested()) {
@@ -140,6 +164,10 @@ int runWindow(const Model& model, State& state, const ViewerOptions& options) {
   }
   state = session.state();
   if (options.finalDeployment && session.hasDeployment()) *options.finalDeployment = session.deploymentState();
+  if (options.finalModel) *options.finalModel = session.model();
+  if (options.finalDeploymentSetup)
+    *options.finalDeploymentSetup = session.deployment() ? std::optional<Deployment>(*session.deployment()) : std::nullopt;
+  if (session.observer()) session.observer()->closed(session.model(), session.state(), session.deploymentState());
   return exitCode;
 }
 

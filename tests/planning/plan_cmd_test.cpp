@@ -186,8 +186,9 @@ TEST(PracticeCommand, ReplayWritesTheSameScoreSheet) {
   if (ui) {
     EXPECT_GT(fs::file_size(dir / "xray.png"), 1000u);
   }
-  // Practice by hand is the window's: scripted inputs do not go with it.
-  EXPECT_EQ(run("practice " + c + " --window --input " + (dir / "timeline.json").string(), &log), 2);
+  // The window records a session by hand (or typed by --input); replaying one is headless.
+  EXPECT_EQ(run("practice " + c + " --window --replay " + (dir / "session.json").string(), &log), 2);
+  EXPECT_NE(log.find("--replay"), std::string::npos) << log;
   ASSERT_EQ(run("practice " + c + " --replay " + (dir / "session.json").string() + " --out " +
                     (dir / "replayed.json").string(),
                 &log),

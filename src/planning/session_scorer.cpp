@@ -1,0 +1,193 @@
+// The score sheet and recording of a practice session, step by step.
+#include "planning/session_scorer.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "io/timeline.h"
+#include "io/units.h"
+
+namespace coilsim::planning {
+namespace {
+
+using nlohmann::ordered_json;
+using Kind = DeviceCommand::Kind;
+
+constexpr double kSampleInterval = 0.1;  // s between protrusion samples
+
+}  // namespace
+
+ordered_json commandJson(const TimedCommand& t) {
+  ordered_json c;
+  c["t_s"] = t.time;
+  const DeviceCommand& d = t.command;
+  auto linear = [&](const char* key) {
+    ordered_json b;
+    b["speed_mm_s"] = units::mToMm(d.rate);
+    if (d.amount > 0) b["distance_mm"] = units::mToMm(d.amount);
+    c[key] = b;
+  };
+  switch (d.kind) {
+    case Kind::Push: linear("push"); break;
+    case Kind::Pull: linear("pull"); break;
+    case Kind::Retract: linear("retract"); break;
+    case Kind::Twist: {
+      ordered_json b;
+      b["rate_deg_s"] = units::radToDeg(d.rate);
+      if (d.amount > 0) b["angle_deg"] = units::radToDeg(d.amount);
+      c["twist"] = b;
+      break;
+    }
+    case Kind::Stop: c["stop"] = ordered_json::object(); break;
+    case Kind::Detach: c["detach"] = ordered_json::object(); break;
+  }
+  return c;
+}
+
+DeviceCommand asRecorded(const DeviceCommand& c) {
+  // Through the text a file holds, as loadSession will read it.
+  ordered_json doc;
+  doc["format"] = io::kTimelineFormat;
+  doc["commands"] = ordered_json::array({commandJson({0.0, c})});
+  return io::parseTimeline(nlohmann::json::parse(doc.dump()), "session").front().command;
+}
+
+bool fluoroscopic(const std::string& view) { return view == "xray" || view == "biplane"; }
+
+ordered_json scoreJson(const ScoreSheet& s) {
+  ordered_json j;
+  j["format"] = "coilsim-score/1";
+  j["case"] = s.caseName;
+  j["coil"] = s.coil;
+  j["ok"] = s.ok;
+  if (!s.ok) j["error"] = s.error;
+  j["time_s"] = s.time;
+  j["coil_length_placed_mm"] = units::mToMm(s.coilLengthPlaced);
+  j["packing_density"] = s.packingDensity;
+  j["neck_coverage"] = s.neckCoverage;
+  j["occlusion_class"] = s.occlusion;
+  j["protrusion_events"] = s.protrusionEvents;
+  j["protruding_at_end"] = s.protrudingAtEnd;
+  if (s.wallForcesAvailable) {
+    j["max_wall_force_mN"] = s.maxWallForce * 1e3;  // N -> mN
+    j["time_above_safety_s"] = s.timeAboveSafety;
+  } else {
+    j["max_wall_force_mN"] = nullptr;  // no contact forces in this build: unknown, not zero
+    j["time_above_safety_s"] = nullptr;
+  }
+  j["max_tip_force_mN"] = s.maxTipForce * 1e3;
+  j["repositionings"] = s.repositionings;
+  j["fluoroscopy_time_s"] = s.fluoroscopyTime;
+  j["detached"] = s.detached;
+  j["detach_in_sac"] = s.detachInSac;
+  j["goal_met"] = s.goalMet;
+  return j;
+}
+
+SessionScorer::SessionScorer(const PracticeCase& pc, const std::string& coil, const Deployment& dep, double dt,
+                             const ContactForceSource& contacts)
+    : case_(pc),
+      contacts_(contacts ? contacts : ContactForceSource(wallContactForces)),
+      coil_(coil),
+      dep_(dep),
+      dt_(dt),
+      sac_(pc.sac) {
+  sac_.neck.normal.normalize();
+  sacVolume_ = volumeOnSide(*sac_.mesh, sac_.neck);
+  neck_ = sampleNeck(sac_);
+  score_.caseName = pc.name;
+  score_.coil = coil;
+}
+
+void SessionScorer::commandAccepted(double, const ordered_json& recorded, const DeviceCommand& applied) {
+  recorded_.push_back(recorded);
+  if (applied.kind == Kind::Pull) ++score_.repositionings;
+}
+
+void SessionScorer::viewChanged(double t, const std::string& view) {
+  if (view == view_) return;
+  view_ = view;
+  views_.emplace_back(t, view);
+}
+
+void SessionScorer::beforeDevice(const DeploymentState& ds) {
+  if (!score_.ok) return;
+  ++steps_;
+  // Counted in steps so the time is exactly steps x dt, as a reader would compute it.
+  if (fluoroscopic(view_)) score_.fluoroscopyTime = double(++fluoroSteps_) * dt_;
+  wasDetached_ = ds.detached;
+  deployedBefore_ = ds.deployed;
+  twistBefore_ = ds.twist;
+}
+
+void SessionScorer::afterDevice(const State& state, const DeploymentState& ds) {
+  if (!score_.ok || !ds.detached || wasDetached_) return;
+  score_.detached = true;
+  const Vec3& tip = state.rods[size_t(dep_.chainRod)].x[size_t(dep_.tipNode)];
+  score_.detachInSac = sac_.neck.signedDistance(tip) >= 0 && insideSurface(sac_, tip);
+}
+
+SacMetrics SessionScorer::measure(const Model& model, const State& state) const {
+  return measureSac(sac_, sacVolume_, neck_, coilLines(model, state, dep_.chainRod, dep_.tipNode));
+}
+
+void SessionScorer::afterStep(const Model& model, const State& state, const DeploymentState& ds, bool ok,
+                              const std::string& why) {
+  if (!score_.ok) return;
+  if (!ok) {
+    score_.ok = false;
+    score_.error = "step refused at t = " + std::to_string(time()) + " s: " + why;
+    return;
+  }
+  // The force a hand feels, with the pusher at rest (FeltTipForce: the sliding tip beam spikes while pushing).
+  if (!ds.detached && felt_.add(dep_, state, ds.deployed == deployedBefore_ && ds.twist == twistBefore_, dt_))
+    score_.maxTipForce = std::max(score_.maxTipForce, felt_.felt);
+  if (contacts_ && contacts_(model, state, forces_)) {
+    score_.wallForcesAvailable = true;
+    wall_.add(forces_, dt_, case_.goal.maxWallForce);
+    score_.maxWallForce = wall_.max;
+    score_.timeAboveSafety = wall_.timeAbove;
+  }
+  const long every = std::max(1L, std::lround(kSampleInterval / dt_));
+  if (steps_ % every == 0) {
+    const SacMetrics m = measure(model, state);
+    if (m.protruding && !protruding_) ++score_.protrusionEvents;
+    protruding_ = m.protruding;
+  }
+}
+
+ScoreSheet SessionScorer::finish(const Model& model, const State& state, const DeploymentState& ds) const {
+  ScoreSheet s = score_;
+  s.time = time();
+  s.coilLengthPlaced = ds.deployed;
+  const SacMetrics m = measure(model, state);
+  s.packingDensity = m.packingDensity;
+  s.neckCoverage = m.neckCoverage;
+  s.occlusion = occlusionClass(m.packingDensity, m.neckCoverage);
+  s.protrudingAtEnd = m.protruding;
+  if (m.protruding && !protruding_) ++s.protrusionEvents;
+  const Goal& g = case_.goal;
+  s.goalMet = s.ok && s.packingDensity >= g.minPackingDensity && (!g.noProtrusion || s.protrusionEvents == 0) &&
+              (!s.wallForcesAvailable || s.maxWallForce <= g.maxWallForce) && (!g.detachInSac || s.detachInSac);
+  return s;
+}
+
+ordered_json SessionScorer::recording(double end) const {
+  ordered_json r;
+  r["format"] = kSessionFormat;
+  r["case"] = case_.file;
+  r["coil"] = coil_;
+  r["end_s"] = end;
+  ordered_json timeline;
+  timeline["format"] = io::kTimelineFormat;
+  timeline["name"] = case_.name + " session";
+  timeline["description"] = "Inputs of a practice session with " + coil_ + "; play with coilsim practice --replay.";
+  timeline["commands"] = ordered_json::array();
+  for (const ordered_json& c : recorded_) timeline["commands"].push_back(c);
+  r["timeline"] = timeline;
+  r["views"] = ordered_json::array();
+  for (const auto& [t, v] : views_) r["views"].push_back(ordered_json{{"t_s", t}, {"view", v}});
+  return r;
+}
+
+}  // namespace coilsim::planning

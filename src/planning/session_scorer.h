@@ -1,0 +1,113 @@
+#pragma once
+// The score sheet and the recording of a practice session, kept step by step
+// from whoever steps the physics: PracticeSession (scripted and replayed
+// sessions) and the window (coilsim practice --window --record). Both call
+// the same hooks in the same order around each step, so a window session and
+// the replay of its recording give the same sheet.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "physics/controller.h"
+#include "physics/deployment.h"
+#include "physics/model.h"
+#include "physics/state.h"
+#include "planning/case_file.h"
+#include "planning/contact_forces.h"
+#include "planning/metrics.h"
+
+namespace coilsim::planning {
+
+inline constexpr const char* kSessionFormat = "coilsim-session/1";
+
+struct ScoreSheet {
+  std::string caseName, coil;
+  double time = 0;                 // s of simulated procedure
+  double coilLengthPlaced = 0;     // m of coil outside the catheter at the end
+  double packingDensity = 0;
+  double neckCoverage = 0;
+  int occlusion = 3;
+  int protrusionEvents = 0;        // times the coil started protruding (sampled every 0.1 s)
+  bool protrudingAtEnd = false;
+  bool wallForcesAvailable = false;
+  double maxWallForce = 0;         // N, largest wall load lasting 5 steps (WallForceStats)
+  double timeAboveSafety = 0;      // s with some wall force above the goal's threshold
+  double maxTipForce = 0;          // N, force of the coil on the catheter tip felt with the pusher at rest
+  int repositionings = 0;          // pulls of the coil back into the catheter
+  double fluoroscopyTime = 0;      // s spent in the X-ray (xray or biplane) view
+  bool detached = false;
+  bool detachInSac = false;        // the catheter tip (detachment zone) was inside the sac at detach
+  bool goalMet = false;
+  bool ok = true;                  // false: a step was refused
+  std::string error;
+};
+
+// The score sheet as JSON ("coilsim-score/1"), in edge units (mm, mN, s).
+nlohmann::ordered_json scoreJson(const ScoreSheet& s);
+
+// One command as a timeline file holds it ({"t_s", "push": {...}}), edge units.
+nlohmann::ordered_json commandJson(const TimedCommand& t);
+// The command as a replay will read it back from that JSON (through the
+// file's units), so a live session runs exactly the numbers its replay runs.
+DeviceCommand asRecorded(const DeviceCommand& c);
+
+// True for the views that count as fluoroscopy time: "xray" and "biplane".
+bool fluoroscopic(const std::string& view);
+
+class SessionScorer {
+ public:
+  // Scores `coil` of `practiceCase` deployed by `dep` with time step `dt` (s);
+  // wall forces come from `contacts` (empty: the contact layer's wallContactForces).
+  SessionScorer(const PracticeCase& practiceCase, const std::string& coil, const Deployment& dep, double dt,
+                const ContactForceSource& contacts = {});
+
+  // Inputs, at the session time `t` (steps x dt) they take effect from.
+  // `recorded` is what the file gets (commandJson of the command as given).
+  void commandAccepted(double t, const nlohmann::ordered_json& recorded, const DeviceCommand& applied);
+  void viewChanged(double t, const std::string& view);
+
+  // Around every step, in this order: before the device moves, after it
+  // moved, after the step. A refused step ends the scoring (nothing later counts).
+  void beforeDevice(const DeploymentState& ds);
+  void afterDevice(const State& state, const DeploymentState& ds);
+  void afterStep(const Model& model, const State& state, const DeploymentState& ds, bool ok, const std::string& why);
+
+  // The sheet at the end (final metrics, goal check).
+  ScoreSheet finish(const Model& model, const State& state, const DeploymentState& ds) const;
+  // The recording: {"format": "coilsim-session/1", "case", "coil", "end_s",
+  // "timeline": <coilsim-timeline/1 document>, "views": [{"t_s", "view"}]}.
+  nlohmann::ordered_json recording(double end) const;
+
+  const ScoreSheet& running() const { return score_; }
+  const std::string& view() const { return view_; }
+  double time() const { return double(steps_) * dt_; }  // s, steps scored so far
+  bool scoring() const { return score_.ok; }
+
+ private:
+  SacMetrics measure(const Model& model, const State& state) const;
+
+  const PracticeCase& case_;
+  ContactForceSource contacts_;
+  std::string coil_;
+  Deployment dep_;
+  double dt_ = 0;
+  Sac sac_;
+  double sacVolume_ = 0;
+  NeckGrid neck_;
+  long steps_ = 0;
+  long fluoroSteps_ = 0;  // steps spent in an X-ray view
+  std::string view_ = "3d";
+  bool protruding_ = false;
+  bool wasDetached_ = false;
+  double deployedBefore_ = 0, twistBefore_ = 0;
+  ScoreSheet score_;
+  std::vector<std::vector<double>> forces_;
+  WallForceStats wall_;
+  FeltTipForce felt_;
+  std::vector<nlohmann::ordered_json> recorded_;  // accepted commands as the timeline file holds them
+  std::vector<std::pair<double, std::string>> views_;
+};
+
+}  // namespace coilsim::planning

@@ -1,0 +1,85 @@
+// Coil and catheter choice: the panel's combos, and loading what the app builds.
+#include <imgui.h>
+
+#include <exception>
+
+#include "ui/panel.h"
+#include "ui/setup.h"
+
+namespace coilsim::ui {
+namespace {
+
+const ImVec4 kFailed(1.0f, 0.45f, 0.35f, 1.0f);
+const ImVec4 kLoaded(0.5f, 0.9f, 0.5f, 1.0f);
+
+// A combo over `items`; returns the index picked this frame, or -1.
+int combo(const char* id, const std::vector<std::string>& items, int current, const char* none) {
+  int picked = -1;
+  const char* preview = current >= 0 && current < int(items.size()) ? items[size_t(current)].c_str() : none;
+  ImGui::SetNextItemWidth(-1.0f);
+  if (ImGui::BeginCombo(id, preview)) {
+    for (int i = 0; i < int(items.size()); ++i) {
+      const bool selected = i == current;
+      if (ImGui::Selectable(items[size_t(i)].c_str(), selected) && !selected) picked = i;
+      if (selected) ImGui::SetItemDefaultFocus();
+    }
+    ImGui::EndCombo();
+  } else if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("%s", preview);  // the panel is narrower than a coil's label
+  }
+  return picked;
+}
+
+void note(const std::string& text) {
+  if (text.empty()) return;
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextDisabled("%s", text.c_str());
+  ImGui::PopTextWrapPos();
+}
+
+}  // namespace
+
+bool applySetup(SetupChoices& choices, int coil, int catheter, Session& session, PanelContext& panel) {
+  SceneSetup setup;
+  try {
+    setup = choices.build(coil, catheter);
+  } catch (const std::exception& e) {
+    // The running setup stays; the panel says why the choice did not load.
+    panel.setupStatus = {e.what(), true};
+    return false;
+  }
+  session.replace(setup.model, setup.state, setup.draw);
+  if (setup.deployment) session.attachDeployment(*setup.deployment);
+  session.setObserver(setup.observer);
+  panel.readouts = setup.readouts;
+  panel.device.confirmDetach = false;
+  choices.coil = coil;
+  choices.catheter = catheter;
+  panel.setupStatus = {setup.loaded, false};
+  return true;
+}
+
+void drawSetupSection(const SetupChoices& choices, PanelContext& ctx) {
+  ImGui::TextDisabled("coil (shape, loop, length, stiffness)");
+  const int coil = combo("##coil", choices.coils, choices.coil, "the scene's coil");
+  note(choices.coilNote);
+  ImGui::TextDisabled("catheter tip");
+  ImGui::BeginDisabled(choices.catheterFixed);
+  const int catheter = combo("##catheter", choices.catheters, choices.catheter, "the scene's catheter");
+  ImGui::EndDisabled();
+  note(choices.catheterNote);
+  // Loaded after the frame (the session is being drawn now).
+  if (coil >= 0 || catheter >= 0) {
+    ctx.setupRequested = true;
+    ctx.setupCoil = coil >= 0 ? coil : choices.coil;
+    ctx.setupCatheter = catheter >= 0 ? catheter : choices.catheter;
+  }
+  if (!ctx.setupStatus.message.empty()) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(ctx.setupStatus.failed ? kFailed : kLoaded, "%s%s", ctx.setupStatus.failed ? "not loaded: " : "",
+                       ctx.setupStatus.message.c_str());
+    ImGui::PopTextWrapPos();
+  }
+}
+
+}  // namespace coilsim::ui
