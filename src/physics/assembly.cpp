@@ -52,20 +52,6 @@ double assembleRodInto(const Model& model, int rodIndex, RodState& rod, double t
   return energy;
 }
 
-Mat3 nodeInertiaGlobal(const RodState& rod, const Quat& q, int node) {
-  const Vec3& d = rod.nodes[node].inertia;  // (t, d1, d2)
-  // Round wire: R diag(It, I, I) R^T = I 1 + (It - I) t t^T, with t the
-  // tangent; a fifth of the general product, and this runs for every node.
-  if (d[1] == d[2]) {
-    const Vec3 t = q * Vec3::UnitX();
-    Mat3 out = (d[0] - d[1]) * (t * t.transpose());
-    out.diagonal().array() += d[1];
-    return out;
-  }
-  const Mat3 r = q.toRotationMatrix();
-  return r * d.asDiagonal() * r.transpose();
-}
-
 void collectFixedDofs(const RodModel& model, RodState& rod) {
   auto& mask = rod.work.fixedMask;
   std::fill(mask.begin(), mask.end(), 0u);
