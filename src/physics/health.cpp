@@ -25,8 +25,15 @@ std::string checkHealth(const Model& model, const State& state) {
       if (r.w[i].squaredNorm() > lim.maxAngularSpeed * lim.maxAngularSpeed)
         return where() + std::to_string(i) + ": angular speed exceeds " + std::to_string(lim.maxAngularSpeed) + " rad/s";
     }
+    // |strain| > s  <=>  |chord|^2 outside [(1 - s)^2, (1 + s)^2] L^2: no
+    // square root or division per beam unless the check fails.
+    const double hi = (1 + lim.maxAxialStrain) * (1 + lim.maxAxialStrain);
+    const double lo = lim.maxAxialStrain < 1 ? (1 - lim.maxAxialStrain) * (1 - lim.maxAxialStrain) : 0.0;
     for (int e = 0; e + 1 < r.activeNodes; ++e) {
-      const double strain = (r.x[e + 1] - r.x[e]).norm() / r.beams[e].length - 1.0;
+      const double L2 = r.beams[e].length * r.beams[e].length;
+      const double d2 = (r.x[e + 1] - r.x[e]).squaredNorm();
+      if (d2 <= hi * L2 && d2 >= lo * L2) continue;
+      const double strain = std::sqrt(d2) / r.beams[e].length - 1.0;
       if (std::abs(strain) > lim.maxAxialStrain)
         return "rod '" + rm.name + "' beam " + std::to_string(e) + ": axial strain " + std::to_string(strain) +
                " beyond " + std::to_string(lim.maxAxialStrain);

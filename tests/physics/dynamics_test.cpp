@@ -271,6 +271,26 @@ TEST(DynamicsTest, BlowUpIsRefusedCountedWarnedOnceAndTheStateRestored) {
   EXPECT_TRUE(step(m, s).ok());
 }
 
+// The strain check compares squared lengths (health.cpp); the limit is on
+// the engineering strain |x_b - x_a| / L0 - 1, which is what is set here.
+TEST(DynamicsTest, HealthRefusesABeamStretchedOrCrushedBeyondTheStrainLimit) {
+  const Model m = movingCantilever();
+  const double limit = m.health.maxAxialStrain;
+  for (const double strain : {0.9 * limit, -0.9 * limit, 1.1 * limit, -1.1 * limit}) {
+    State s = makeState(m);
+    RodState& r = s.rods[0];
+    const Vec3 chord = r.x[4] - r.x[3];
+    const Vec3 shift = strain * chord;  // beam 3 gets strain, beam 4 keeps its length
+    for (int i = 4; i < r.activeNodes; ++i) r.x[i] += shift;
+    const std::string problem = checkHealth(m, s);
+    if (std::abs(strain) < limit) {
+      EXPECT_TRUE(problem.empty()) << strain << ": " << problem;
+    } else {
+      EXPECT_NE(problem.find("beam 3: axial strain"), std::string::npos) << strain << ": " << problem;
+    }
+  }
+}
+
 TEST(DynamicsTest, RefusedStepLeavesNoTrace) {
   SKIP_IF_OPEN(kRefusedStepMovesTargets);
   Model m = movingCantilever();
