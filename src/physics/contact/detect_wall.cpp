@@ -60,10 +60,10 @@ Nearest nearestFeature(const ObstacleTree& tree, const Vec3& a, const Vec3& b, d
 // The outward direction that decides the side of the nearest feature: the
 // face normal for a face, the angle-weighted pseudo-normal of the faces
 // sharing it for an edge or a vertex (Baerentzen and Aanaes, IEEE TVCG
-// 2005). One triangle's normal is wrong at a ridge: where the sac meets its
-// vessel at the neck the wall is a sliver 0.2 mm thick, and a centre line
-// 0.2 mm inside the sac whose nearest point was the rim vertex was put on
-// the far side of the vessel's roof triangle: 0.35 mm "deep", 35-50 N.
+// 2005). One triangle's normal can be wrong at a sharp ridge: where the sac
+// meets its vessel at the neck the wall is a sliver 0.2 mm thick, and
+// segments inside the sac near that rim were taken as 0.35-0.41 mm beyond
+// the wall and thrown with 35-49 N.
 Vec3 pseudoNormal(const ObstacleTree& tree, const Nearest& n, const std::vector<int>& candidates, double radius) {
   const double tol = 1e-9 * radius;
   const TriangleMesh& m = tree.mesh();
@@ -186,8 +186,8 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
             // The plane is that face's only where the segment lies over it.
             // Past its edges (a saddle, such as the fillet where a sac meets
             // its vessel, is concave one way and convex the other) the plane
-            // cuts into the free space and claimed 0.1-0.4 mm penetrations of
-            // a face the capsule does not touch, with forces of 10-20 N.
+            // cuts into the free space and claimed 0.04-0.39 mm penetrations
+            // of a face the capsule does not touch, with forces of 2-23 N.
             // Such a plane is moved out to the face's true distance: it stays
             // a barrier for the step's motion and pushes on nothing.
             if (q.gap < 0 && hit.distance > radius) {
