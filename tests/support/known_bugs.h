@@ -105,19 +105,23 @@ inline constexpr KnownBug kSoftCoilHeadOnWallContact{
     "known bug: a soft wound coil pushed head-on into a sac dome at 10 mm/s is refused (axial strain) by the "
     "current wall-contact law, which is validated on the paper's stiff wire only; see tests/support/known_bugs.h"};
 
-// The default scene (the soft coil of sidewall-7mm.json, catheter tilted
-// 30 degrees) pushed 30 mm at 10 mm/s ends with a loop below the neck plane:
-// lowest node 0.22 mm below at 3.3 s, 0.35 mm at 3.0 s, 0.09 mm at rest
-// (4-5 s, unchanged), with no wall penetration (the nearest node centre is
-// 0.157 mm inside the wall, r = 0.152 mm) and no refused or substepped step.
-// The loop runs across the neck opening, where there is no wall; a 7 mm
-// loop on a great circle of the 7 mm sac crosses the neck and would sag
-// 0.47 mm below the plane. Whether this is the coil's physical protrusion
-// or a contact artefact (friction holding the loop there) was not settled.
-inline constexpr KnownBug kDefaultSceneLoopBelowNeck{
+// The soft coil's loops cross the neck plane in the 30 mm scene tests
+// (tests/app/scenes_test.cpp). The default scene (catheter tilted 30
+// degrees) ends with a loop across the neck opening below the plane: lowest
+// node 0.22-0.23 mm below at 3.3 s, 0.35 mm at 3.0 s, 0.09 mm at rest (4-5 s,
+// unchanged), with no wall penetration (nearest node centre 0.157 mm inside
+// the wall, r = 0.152 mm) and no refused or substepped step. The lowest node
+// of the other scenes is as sensitive: bifurcation-7mm.json +0.61 mm on
+// commit 8397512 but -0.16 mm on e4931b5 (the lead's reordered beam and
+// solver arithmetic) with the same contact code, +0.10 mm there with the
+// older wall detection; sidewall-7mm.json +0.31 / +0.58 mm with the neck-rim
+// fix, -0.24 mm without it. A 7 mm loop on a great circle of the 7 mm sac
+// crosses the neck and would sag 0.47 mm below the plane, so this may be the
+// coil's real protrusion rather than a contact artefact; not settled.
+inline constexpr KnownBug kLoopBelowNeckPlane{
     true,
-    "known bug: in the default scene (catheter tilted 30 degrees) a loop of the soft coil rests 0.1-0.35 mm "
-    "below the neck plane; see tests/support/known_bugs.h"};
+    "known bug: a loop of the soft coil rests up to 0.35 mm below the neck plane in the default and bifurcation "
+    "scenes (sensitive to round-off); see tests/support/known_bugs.h"};
 
 // Fixed: coil-coil contact (rod_contact) yielded when a pushed coil was
 // aimed at a detached one (tests/physics/contact_rod_test.cpp): closest
