@@ -117,8 +117,9 @@ void advanceTargets(const Model& model, State& state, double dt) {
 namespace {
 
 // One implicit step of model.timeStep from the current state; `detect` runs
-// the effects' per-step preparation (contact detection) first.
-StepReport attempt(const Model& model, State& state, bool detect, long& iterations) {
+// the effects' per-step preparation (contact detection) first, `verify`
+// asks them afterwards whether the step outran it.
+StepReport attempt(const Model& model, State& state, bool detect, bool verify, long& iterations) {
   for (RodState& r : state.rods) saveStart(r);
   advanceTargets(model, state, model.timeStep);
   if (detect)
@@ -131,6 +132,11 @@ StepReport attempt(const Model& model, State& state, bool detect, long& iteratio
     const std::string problem = checkHealth(model, state);
     if (!problem.empty()) report = {StepStatus::BlowUp, problem};
   }
+  for (size_t k = 0; k < model.effects.size() && verify && report.ok(); ++k)
+    if (model.effects[k].enabled) {
+      std::string missed = model.effects[k].effect->endStep(model, model.effects[k].values, state);
+      if (!missed.empty()) report = {StepStatus::Missed, std::move(missed)};
+    }
   return report;
 }
 
@@ -154,7 +160,8 @@ StepReport retryInSubsteps(const Model& model, State& state, const Snapshot& sta
     report = {};
     for (int p = 0; p < parts && report.ok(); ++p) {
       // The contacts found at the start of the interval still hold for the first substep.
-      report = attempt(fine, state, p > 0, iterations);
+      // The finest split is kept even if an effect says it outran its preparation.
+      report = attempt(fine, state, p > 0, parts < kMaxParts, iterations);
       state.time += fine.timeStep;
     }
     state.time = start.time;  // step() adds the whole interval
@@ -169,7 +176,7 @@ StepReport retryInSubsteps(const Model& model, State& state, const Snapshot& sta
 StepReport step(const Model& model, State& state) {
   const auto start = std::chrono::steady_clock::now();
   long iterations = 0;
-  StepReport report = attempt(model, state, true, iterations);
+  StepReport report = attempt(model, state, true, true, iterations);
   if (!report.ok()) {
     for (RodState& r : state.rods) restoreStart(r);
     Snapshot snapshot{state.rods, state.time};
@@ -180,8 +187,9 @@ StepReport step(const Model& model, State& state) {
     } else {
       state.rods = std::move(snapshot.rods);
       ++state.blowups;
-      warnOnce(state, "step refused at t = " + std::to_string(state.time) + " s: " + first.message);
-      report = first;
+      // A missed contact alone is not why a step is refused: the substeps' failure is.
+      if (first.status != StepStatus::Missed) report = first;
+      warnOnce(state, "step refused at t = " + std::to_string(state.time) + " s: " + report.message);
     }
   }
   if (report.ok()) state.time += model.timeStep;

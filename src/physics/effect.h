@@ -51,6 +51,12 @@ class Effect {
   // assembled, for effects that look at all rods together (contact
   // detection); they keep what they find in the State. Default: nothing.
   virtual void beginStep(const Model&, std::span<const double>, State&) const {}
+  // Called after every rod has been stepped, for effects whose beginStep
+  // prepared what the step's own motion can outrun (a contact reached
+  // within the step that was not in its implicit solve). A non-empty answer
+  // says what was missed, and the step is taken again in substeps, each
+  // with its own beginStep. Default: nothing missed.
+  virtual std::string endStep(const Model&, std::span<const double>, const State&) const { return {}; }
 };
 
 // One effect switched into a model, with its parameter values (SI).

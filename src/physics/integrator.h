@@ -8,7 +8,7 @@
 
 namespace coilsim {
 
-enum class StepStatus { Ok, BlowUp, SolverFailure };
+enum class StepStatus { Ok, BlowUp, SolverFailure, Missed };  // Missed: Effect::endStep
 
 struct StepReport {
   StepStatus status = StepStatus::Ok;

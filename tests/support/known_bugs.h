@@ -89,32 +89,50 @@ inline constexpr KnownBug kElementRollFromNodeA{
     "known bug: the element frame takes its roll from node a only, so curved rods under torsion converge at "
     "first order (beam.cpp evalBeam); see tests/support/known_bugs.h"};
 
-// The contact law of docs/contact.md (implicit secant friction, swept
-// detection, 5 % skin, wall stiffness 200 N/mm2) is validated on the paper's
-// solid wire (EI 3 N mm2: the 10 mm/s cavity test). A soft wound coil
-// (sidewall-7mm.json: B = 0.003 N mm2, 1000 times softer) pushed at 10 mm/s
-// straight into the dome of the 7 mm phantom has its step refused (axial
-// strain 0.5-1.1 in a distal beam) after 19-40 mm, with 1 or 3 Newton
-// iterations, at 0.5 ms steps, with wall stiffness 20-200 N/mm2, with or
-// without self-contact and with a catheter tilted 15 or 20 degrees; the
-// default scene (tilted 30 degrees) completes its 30 mm but a loop dips
-// 0.3 mm below the neck plane. The contact code before commit 9b52128 ran
-// both scenes cleanly but failed the cavity test.
+// Fixed: a soft wound coil (sidewall-7mm.json: B = 0.003 N mm2) pushed
+// straight into the 7 mm phantom had its step refused (axial strain 0.5-1.3,
+// Newton diverging over its 3 iterations) after 19-22 mm. Instrumented, the
+// refused steps started with wall contacts 0.18-0.41 mm "deep" carrying
+// 9-49 N at segments that were clear of the wall (nearest feature 31-45 um
+// away, or 0.19 mm inside the sac sphere), on the neck rim where the sac
+// meets the vessel: the side of an edge or vertex was
+// taken from one of its triangles' normals (wrong at that sharp ridge), and
+// the planes of concave neighbour faces were used past those faces' edges,
+// where they cut the free space of a saddle (docs/contact.md). The full
+// 60 mm of push-sidewall-7mm.json now runs with no refused step.
 inline constexpr KnownBug kSoftCoilHeadOnWallContact{
-    true,
+    false,
     "known bug: a soft wound coil pushed head-on into a sac dome at 10 mm/s is refused (axial strain) by the "
     "current wall-contact law, which is validated on the paper's stiff wire only; see tests/support/known_bugs.h"};
 
-// Coil-coil contact (rod_contact) yields when a pushed coil is aimed at a
-// detached one (tests/physics/contact_rod_test.cpp, second catheter tip
-// 0.5 mm beside the first): closest centre lines 187 um at the default
-// 50 N/mm, 95 um at 500 N/mm, 233 um at 2000 N/mm, against r1 + r2 = 300 um
-// (0 um with the contact off). The pusher drives the second coil's
-// proximal end by prescribed motion, and the pair coupling is split between
-// the two rods' diagonal blocks (physics/contact/response.h), so the first,
-// light and wall-held, coil does not give way and the penalty yields.
-inline constexpr KnownBug kCoilCoilContactYields{
+// The soft coil's loops cross the neck plane in the 30 mm scene tests
+// (tests/app/scenes_test.cpp). The default scene (catheter tilted 30
+// degrees) ends with a loop across the neck opening below the plane: lowest
+// node 0.22-0.23 mm below at 3.3 s, 0.35 mm at 3.0 s, 0.09 mm at rest (4-5 s,
+// unchanged), with no wall penetration (nearest node centre 0.157 mm inside
+// the wall, r = 0.152 mm) and no refused or substepped step. The lowest node
+// of the other scenes is as sensitive: bifurcation-7mm.json +0.61 mm on
+// commit 8397512 but -0.16 mm on e4931b5 (the lead's reordered beam and
+// solver arithmetic) with the same contact code, +0.10 mm there with the
+// older wall detection; sidewall-7mm.json +0.31 / +0.58 mm with the neck-rim
+// fix, -0.24 mm without it. A 7 mm loop on a great circle of the 7 mm sac
+// crosses the neck and would sag 0.47 mm below the plane, so this may be the
+// coil's real protrusion rather than a contact artefact; not settled.
+inline constexpr KnownBug kLoopBelowNeckPlane{
     true,
+    "known bug: a loop of the soft coil rests up to 0.35 mm below the neck plane in the default and bifurcation "
+    "scenes (sensitive to round-off); see tests/support/known_bugs.h"};
+
+// Fixed: coil-coil contact (rod_contact) yielded when a pushed coil was
+// aimed at a detached one (tests/physics/contact_rod_test.cpp): closest
+// centre lines 187 um against r1 + r2 = 300 um, whatever the stiffness. The
+// second coil's tip rested against the first (gap 0-15 um, not closing) and
+// whipped from rest to 0.13-0.34 m/s within one step, so the pair was not in
+// that step's implicit solve (or not even found) and went 110 um in. A step
+// that carries a pair deeper than 5 % of r1 + r2 outside its contacts is now
+// taken again in substeps (Effect::endStep): 285 um at 50-2000 N/mm.
+inline constexpr KnownBug kCoilCoilContactYields{
+    false,
     "known bug: a coil pushed at a detached coil passes 40-70 % of a wire diameter into it (rod_contact penalty "
     "yields); see tests/support/known_bugs.h"};
 

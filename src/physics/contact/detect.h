@@ -3,6 +3,8 @@
 // (physics/contact/contact_state.h), carries friction memory over from the
 // last step and reports the normal force per node. The response is in
 // response.h; the effects in physics/effects/*_contact.cpp tie them together.
+#include <string>
+
 #include "physics/contact/response.h"
 #include "physics/model.h"
 #include "physics/state.h"
@@ -44,5 +46,21 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
 // `catheterLaw` is used when one side is a catheter.
 void detectRodContacts(const Model& model, State& state, bool sameRod, double margin, const ContactLaw& law,
                        const ContactLaw& catheterLaw);
+
+// A pair contact that was not in a step's implicit solve (apart at the start
+// and its start velocity not carrying it into touch) but which the step's
+// own motion carried deeper than this fraction of r1 + r2 was missed: the
+// linearisation did not know it. (A coil tip whipping off a loop reaches
+// 0.1-0.3 m/s within one step from rest: 100-300 um, where the start
+// velocity predicted nothing; see docs/contact.md.)
+inline constexpr double kMissedContact = 0.05;
+
+// After a step: why a segment pair went deeper than kMissedContact into
+// another segment without having been in the step's contacts (sameRod: self
+// contacts, else between rods), or empty if none did. The step is then taken
+// again in substeps (Effect::endStep), each with its own detection. Costs a
+// pass over the contact lists, or a grid scan when some node moved more than
+// about margin / 2 in the step.
+std::string checkRodContacts(const Model& model, const State& state, bool sameRod, double margin);
 
 }  // namespace coilsim

@@ -23,37 +23,27 @@ std::uint64_t cellKey(long ix, long iy, long iz) {
 
 bool takesPart(const RodState& r) { return r.active && r.activeNodes >= 2; }
 
-}  // namespace
-
-void detectRodContacts(const Model& model, State& state, bool sameRod, double margin, const ContactLaw& law,
-                       const ContactLaw& catheterLaw) {
+// Calls visit(ri, si, rj, sj) once for every pair of segments (ri before rj,
+// or si < sj - 1 in one rod) whose midpoints lie in neighbouring cells of a
+// uniform grid with cells at least as large as the reach of any two capsules
+// (half a segment + radius + what the segment sweeps in `sweep` s at its
+// velocity) plus `margin`: every pair that can come within `margin` is
+// visited. O(n) for a coil, not O(n^2).
+template <class Visit>
+void forEachNearPair(const Model& model, const State& state, bool sameRod, double margin, double sweep, Visit visit) {
   static thread_local std::vector<GridSegment> grid;
   grid.clear();
-  // Fresh lists for this step: the old ones move to a per-rod previous buffer.
-  static thread_local std::vector<std::vector<ContactPoint>> previous;
-  previous.resize(state.rods.size());
-  for (size_t k = 0; k < state.rods.size(); ++k) {
-    std::vector<ContactPoint>& list = sameRod ? state.rods[k].contact.self : state.rods[k].contact.rod;
-    std::swap(previous[k], list);
-    list.clear();
-  }
-
-  // Cells at least as large as the reach of any two capsules, so every pair
-  // that can touch lies in neighbouring cells.
-  // The reach includes what a segment sweeps in the step at its start
-  // velocity, so a pair that would meet within the step is found (response.h).
-  const double h = model.timeStep;
   double reach = 0;
   for (size_t k = 0; k < state.rods.size(); ++k) {
     const RodState& r = state.rods[k];
     if (!takesPart(r)) continue;
     for (int e = 0; e + 1 < r.activeNodes; ++e)
       reach = std::max(reach, 0.5 * (r.x[e + 1] - r.x[e]).norm() + std::max(r.nodes[e].radius, r.nodes[e + 1].radius) +
-                                  h * std::max(r.v[e].norm(), r.v[e + 1].norm()));
+                                  sweep * std::max(r.v[e].norm(), r.v[e + 1].norm()));
   }
   const double cell = 2 * reach + margin;
-  const bool usable = cell > 0 && std::isfinite(cell);  // else no rod takes part (or positions are not finite)
-  for (size_t k = 0; k < state.rods.size() && usable; ++k) {
+  if (!(cell > 0) || !std::isfinite(cell)) return;  // no rod takes part (or positions are not finite)
+  for (size_t k = 0; k < state.rods.size(); ++k) {
     const RodState& r = state.rods[k];
     if (!takesPart(r)) continue;
     for (int e = 0; e + 1 < r.activeNodes; ++e) {
@@ -63,11 +53,9 @@ void detectRodContacts(const Model& model, State& state, bool sameRod, double ma
     }
   }
   std::sort(grid.begin(), grid.end(), [](const GridSegment& a, const GridSegment& b) { return a.cell < b.cell; });
-
   for (const GridSegment& gi : grid) {
     const RodState& ri = state.rods[gi.rod];
-    const Vec3 &a0 = ri.x[gi.segment], &a1 = ri.x[gi.segment + 1];
-    const Vec3 m = 0.5 * (a0 + a1) / cell;
+    const Vec3 m = 0.5 * (ri.x[gi.segment] + ri.x[gi.segment + 1]) / cell;
     const long cx = std::lround(std::floor(m.x())), cy = std::lround(std::floor(m.y())), cz = std::lround(std::floor(m.z()));
     for (long dx = -1; dx <= 1; ++dx)
       for (long dy = -1; dy <= 1; ++dy)
@@ -81,47 +69,69 @@ void detectRodContacts(const Model& model, State& state, bool sameRod, double ma
             if (gj.rod < gi.rod || (gj.rod == gi.rod && gj.segment <= gi.segment)) continue;
             if (sameRod != (gj.rod == gi.rod)) continue;
             if (sameRod && gj.segment - gi.segment <= 1) continue;
-            const RodModel &mi = model.rods[gi.rod], &mj = model.rods[gj.rod];
-            if (mi.role == RodRole::Catheter && mj.role == RodRole::Catheter) continue;
-            const RodState& rj = state.rods[gj.rod];
-            const Vec3 &b0 = rj.x[gj.segment], &b1 = rj.x[gj.segment + 1];
-            const double ra = 0.5 * (ri.nodes[gi.segment].radius + ri.nodes[gi.segment + 1].radius);
-            const double rb = 0.5 * (rj.nodes[gj.segment].radius + rj.nodes[gj.segment + 1].radius);
-            const double touch = 1e-3 * std::min(ra, rb);
-            if (!sameRod && ((a0 - b0).norm() < touch || (a0 - b1).norm() < touch || (a1 - b0).norm() < touch ||
-                             (a1 - b1).norm() < touch))
-              continue;
-            const SegmentPair p = closestSegmentSegment(a0, a1, b0, b1);
-            const double gap = p.distance - ra - rb;
-            if (p.distance <= 1e-12 * ra) continue;
-            // Closing speed of the pair along the line of centres, at the start of the step.
-            const Vec3 normal = (p.p - p.q) / p.distance;
-            const Vec3 va = (1 - p.s) * ri.v[gi.segment] + p.s * ri.v[gi.segment + 1];
-            const Vec3 vb = (1 - p.t) * rj.v[gj.segment] + p.t * rj.v[gj.segment + 1];
-            const bool closing = -gap - h * normal.dot(va - vb) > 0;
-            if (gap > margin && !closing) continue;
-            ContactPoint c;
-            c.segment = gi.segment, c.other = gj.rod, c.otherSegment = gj.segment;
-            c.s = p.s;
-            c.normal = normal;
-            c.anchor = p.q;
-            c.radius = ra + rb;
-            c.gap = gap;
-            c.otherVelocity = vb;
-            c.closing[0] = closing;
-            ContactPoint d = c;
-            d.segment = gj.segment, d.other = gi.rod, d.otherSegment = gi.segment;
-            d.s = p.t;
-            d.normal = -c.normal;
-            d.anchor = p.p;
-            d.otherVelocity = va;
-            auto& li = sameRod ? state.rods[gi.rod].contact.self : state.rods[gi.rod].contact.rod;
-            auto& lj = sameRod ? state.rods[gj.rod].contact.self : state.rods[gj.rod].contact.rod;
-            li.push_back(c);
-            lj.push_back(d);
+            if (model.rods[gi.rod].role == RodRole::Catheter && model.rods[gj.rod].role == RodRole::Catheter) continue;
+            visit(gi.rod, gi.segment, gj.rod, gj.segment);
           }
         }
   }
+}
+
+// Mean radius of segment e of r.
+double segmentRadius(const RodState& r, int e) { return 0.5 * (r.nodes[e].radius + r.nodes[e + 1].radius); }
+
+// Whether the segments share an end (a deploying coil leaving its catheter
+// tip): such pairs are not contacts.
+bool shareAnEnd(const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1, double touch) {
+  return (a0 - b0).norm() < touch || (a0 - b1).norm() < touch || (a1 - b0).norm() < touch || (a1 - b1).norm() < touch;
+}
+
+}  // namespace
+
+void detectRodContacts(const Model& model, State& state, bool sameRod, double margin, const ContactLaw& law,
+                       const ContactLaw& catheterLaw) {
+  // Fresh lists for this step: the old ones move to a per-rod previous buffer.
+  static thread_local std::vector<std::vector<ContactPoint>> previous;
+  previous.resize(state.rods.size());
+  for (size_t k = 0; k < state.rods.size(); ++k) {
+    std::vector<ContactPoint>& list = sameRod ? state.rods[k].contact.self : state.rods[k].contact.rod;
+    std::swap(previous[k], list);
+    list.clear();
+  }
+  // The reach includes what a segment sweeps in the step at its start
+  // velocity, so a pair that would meet within the step is found (response.h).
+  const double h = model.timeStep;
+  forEachNearPair(model, state, sameRod, margin, h, [&](int ki, int si, int kj, int sj) {
+    const RodState &ri = state.rods[ki], &rj = state.rods[kj];
+    const Vec3 &a0 = ri.x[si], &a1 = ri.x[si + 1], &b0 = rj.x[sj], &b1 = rj.x[sj + 1];
+    const double ra = segmentRadius(ri, si), rb = segmentRadius(rj, sj);
+    if (!sameRod && shareAnEnd(a0, a1, b0, b1, 1e-3 * std::min(ra, rb))) return;
+    const SegmentPair p = closestSegmentSegment(a0, a1, b0, b1);
+    const double gap = p.distance - ra - rb;
+    if (p.distance <= 1e-12 * ra) return;
+    // Closing speed of the pair along the line of centres, at the start of the step.
+    const Vec3 normal = (p.p - p.q) / p.distance;
+    const Vec3 va = (1 - p.s) * ri.v[si] + p.s * ri.v[si + 1];
+    const Vec3 vb = (1 - p.t) * rj.v[sj] + p.t * rj.v[sj + 1];
+    const bool closing = -gap - h * normal.dot(va - vb) > 0;
+    if (gap > margin && !closing) return;
+    ContactPoint c;
+    c.segment = si, c.other = kj, c.otherSegment = sj;
+    c.s = p.s;
+    c.normal = normal;
+    c.anchor = p.q;
+    c.radius = ra + rb;
+    c.gap = gap;
+    c.otherVelocity = vb;
+    c.closing[0] = closing;
+    ContactPoint d = c;
+    d.segment = sj, d.other = ki, d.otherSegment = si;
+    d.s = p.t;
+    d.normal = -c.normal;
+    d.anchor = p.p;
+    d.otherVelocity = va;
+    (sameRod ? state.rods[ki].contact.self : state.rods[ki].contact.rod).push_back(c);
+    (sameRod ? state.rods[kj].contact.self : state.rods[kj].contact.rod).push_back(d);
+  });
   for (size_t k = 0; k < state.rods.size(); ++k) {
     RodState& r = state.rods[k];
     std::vector<ContactPoint>& list = sameRod ? r.contact.self : r.contact.rod;
@@ -136,6 +146,63 @@ void detectRodContacts(const Model& model, State& state, bool sameRod, double ma
     // Per-node report with the pair law (the catheter law differs only in friction).
     reportContacts(list, r, law, sameRod ? r.contact.selfForce : r.contact.rodForce);
   }
+}
+
+namespace {
+
+// The contact of rod k's list between its segment si and segment sj of rod kj, if any.
+const ContactPoint* listed(const State& state, bool sameRod, int k, int si, int kj, int sj) {
+  const std::vector<ContactPoint>& list = sameRod ? state.rods[k].contact.self : state.rods[k].contact.rod;
+  auto it = std::lower_bound(list.begin(), list.end(), si, [](const ContactPoint& c, int seg) { return c.segment < seg; });
+  for (; it != list.end() && it->segment == si; ++it)
+    if (it->other == kj && it->otherSegment == sj) return &*it;
+  return nullptr;
+}
+
+}  // namespace
+
+std::string checkRodContacts(const Model& model, const State& state, bool sameRod, double margin) {
+  // A pair left out at the start was more than `margin` apart: it can only
+  // have gone deeper than the tolerance if its two segments together moved
+  // more than margin + tolerance (the distance between two segments changes
+  // by at most the largest displacement of their end points on each side).
+  double moved = 0, smallest = INFINITY;
+  for (const RodState& r : state.rods) {
+    if (!takesPart(r) || r.work.x0.size() < size_t(r.activeNodes)) continue;
+    for (int i = 0; i < r.activeNodes; ++i) moved = std::max(moved, (r.x[i] - r.work.x0[i]).norm());
+    for (int i = 0; i < r.activeNodes; ++i) smallest = std::min(smallest, r.nodes[i].radius);
+  }
+  if (!(moved > 0)) return {};
+  const bool scan = 2 * moved > margin + 2 * kMissedContact * smallest;
+  std::string missed;
+  double deepest = 0;
+  const auto check = [&](int ki, int si, int kj, int sj) {
+    const RodState &ri = state.rods[ki], &rj = state.rods[kj];
+    const Vec3 &a0 = ri.x[si], &a1 = ri.x[si + 1], &b0 = rj.x[sj], &b1 = rj.x[sj + 1];
+    const double ra = segmentRadius(ri, si), rb = segmentRadius(rj, sj);
+    if (!sameRod && shareAnEnd(a0, a1, b0, b1, 1e-3 * std::min(ra, rb))) return;
+    const double depth = ra + rb - closestSegmentSegment(a0, a1, b0, b1).distance;
+    if (depth <= kMissedContact * (ra + rb) || depth <= deepest) return;
+    const ContactPoint* c = listed(state, sameRod, ki, si, kj, sj);
+    if (c && (c->gap < 0 || c->closing[0])) return;  // in the step's implicit solve: the penalty's business
+    deepest = depth;
+    missed = "rod '" + model.rods[ki].name + "' segment " + std::to_string(si) + " went " +
+             std::to_string(int(std::lround(depth * 1e6))) + " um into rod '" + model.rods[kj].name + "' segment " +
+             std::to_string(sj) + " within the step, outside its contacts";
+  };
+  if (scan) {
+    forEachNearPair(model, state, sameRod, 0.0, 0.0, check);
+  } else {
+    // Only the pairs found at the start but not touching nor closing can have been missed.
+    for (size_t k = 0; k < state.rods.size(); ++k) {
+      if (!takesPart(state.rods[k])) continue;
+      for (const ContactPoint& c : sameRod ? state.rods[k].contact.self : state.rods[k].contact.rod)
+        if (int(k) < c.other || (int(k) == c.other && c.segment < c.otherSegment))
+          if (takesPart(state.rods[c.other]) && c.otherSegment + 1 < state.rods[c.other].activeNodes)
+            check(int(k), c.segment, c.other, c.otherSegment);
+    }
+  }
+  return missed;
 }
 
 }  // namespace coilsim

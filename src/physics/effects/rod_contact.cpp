@@ -33,6 +33,9 @@ class RodContact final : public Effect {
   void beginStep(const Model& model, std::span<const double> p, State& state) const override {
     detectRodContacts(model, state, false, p[2], coilLaw(p), catheterLaw(p));
   }
+  std::string endStep(const Model& model, std::span<const double> p, const State& state) const override {
+    return checkRodContacts(model, state, false, p[2]);
+  }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
     const ContactLaw coil = coilLaw(p), catheter = catheterLaw(p);
     const auto& list = c.state.contact.rod;
