@@ -21,6 +21,8 @@
 #include "geometry/volume.h"
 #include "io/mesh_file.h"
 #include "planning/case_file.h"
+#include "planning/metrics.h"
+#include "planning/sac_geometry.h"
 #include "support/known_bugs.h"
 
 namespace {
@@ -103,6 +105,7 @@ struct CoilCheck {
   double minDepth = 1e9;        // smallest distance of a node centre inside the surface, mm (< 0: outside)
   double maxFromCentre = 0;     // largest distance of a node from the sac centre, mm
   double minAboveNeck = 1e9;    // lowest node above the neck plane, mm
+  double beyondNeck = 0;        // coil length inside the surface beyond the neck plane, mm (planning's measure)
   int nodes = 0;
 };
 
@@ -122,13 +125,17 @@ CoilCheck deployInto(const std::string& name, const fs::path& scene, const std::
   const io::MeshInspection in = io::inspectMeshFile(stl.string());
   const geometry::MeshQuery query(in.mesh);
   const geometry::PhantomInfo info = io::readPhantomSidecar(io::phantomSidecarPath(stl.string()));
+  const planning::Sac sac = planning::phantomSac(stl.string());
   for (const json& rod : result["rods"]) {
     if (rod["name"] != "coil") continue;
+    Vec3 previous = Vec3::Zero();
     for (const json& n : rod["nodes_mm"]) {
       const Vec3 x(n[0].get<double>(), n[1].get<double>(), n[2].get<double>());
       c.minDepth = std::min(c.minDepth, -query.signedDistance(x));
       c.maxFromCentre = std::max(c.maxFromCentre, (x - info.sacCentre).norm());
       c.minAboveNeck = std::min(c.minAboveNeck, info.neck.side(x));
+      if (c.nodes > 0) c.beyondNeck += 1e3 * planning::lengthBeyondNeck(sac, 1e-3 * previous, 1e-3 * x);
+      previous = x;
       ++c.nodes;
     }
   }
@@ -172,11 +179,16 @@ TEST_P(ContactScene, ShortenedDeploymentKeepsTheCoilInTheSac) {
   EXPECT_GE(c.minDepth, 0.9 * r);   // and the wire itself: penetration below 10 % of its radius (issue 6)
   const geometry::PhantomInfo info = io::readPhantomSidecar(io::phantomSidecarPath((kCatalogue / sc.mesh).string()));
   EXPECT_LE(c.maxFromCentre, info.sacRadii.x() + 0.1 * r);
+  // In the sac, not in the vessel: every node above the neck plane, and not
+  // protruding as planning judges it (less coil beyond the plane than
+  // MetricOptions::protrusionLength).
   EXPECT_GT(c.minAboveNeck, 0.0);
+  EXPECT_LT(c.beyondNeck, 1e3 * planning::MetricOptions{}.protrusionLength);
   std::printf("[ measured ] %s: %d nodes; nearest node centre %.5f mm inside the wall (wire radius r = %.4f mm: "
-              "penetration %.2e mm); farthest node %.3f mm from the sac centre (R %.2f); lowest %.3f mm above the neck plane\n",
+              "penetration %.2e mm); farthest node %.3f mm from the sac centre (R %.2f); lowest %.3f mm above the neck "
+              "plane, %.3f mm of coil beyond it\n",
               sc.scene, c.nodes, c.minDepth, r, std::max(0.0, r - c.minDepth),
-              c.maxFromCentre, info.sacRadii.x(), c.minAboveNeck);
+              c.maxFromCentre, info.sacRadii.x(), c.minAboveNeck, c.beyondNeck);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ContactScene,
