@@ -1,8 +1,15 @@
 #include "ui/realtime.h"
 
 #include <algorithm>
+#include <chrono>
 
 namespace coilsim::ui {
+
+double wallSeconds() {
+  using clock = std::chrono::steady_clock;
+  static const clock::time_point start = clock::now();
+  return std::chrono::duration<double>(clock::now() - start).count();
+}
 
 RealTimeLoop::RealTimeLoop(const RealTimeConfig& config) : config_(config) {}
 

@@ -8,6 +8,9 @@
 
 namespace coilsim::ui {
 
+// Seconds of wall time since the first call (steady clock): the frame loops' clock.
+double wallSeconds();
+
 struct RealTimeConfig {
   double timeStep = 1e-3;       // s, model.timeStep
   double timeScale = 1.0;       // simulated seconds per real second wanted

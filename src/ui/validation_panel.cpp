@@ -22,16 +22,11 @@
 #include "render/image.h"
 #include "render/renderer.h"
 #include "ui/imgui_layer.h"
+#include "ui/realtime.h"
 #include "ui/views.h"
 
 namespace coilsim::ui {
 namespace {
-
-double wallSeconds() {
-  using clock = std::chrono::steady_clock;
-  static const clock::time_point start = clock::now();
-  return std::chrono::duration<double>(clock::now() - start).count();
-}
 
 // What the panel holds between frames; the fit runs on its own thread and
 // hands its progress and result over under the mutex.

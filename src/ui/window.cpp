@@ -13,16 +13,11 @@
 #include "render/image.h"
 #include "ui/frame.h"
 #include "ui/input.h"
+#include "ui/realtime.h"
 #include "ui/viewer.h"
 
 namespace coilsim::ui {
 namespace {
-
-double wallSeconds() {
-  using clock = std::chrono::steady_clock;
-  static const clock::time_point start = clock::now();
-  return std::chrono::duration<double>(clock::now() - start).count();
-}
 
 bool writeWindowShot(int width, int height, const std::string& path) {
   render::Image image;
