@@ -123,6 +123,13 @@ int runPractice(const std::vector<std::string>& args) {
   if (!replay.empty() && (!coil.empty() || !record.empty() || duration > 0 || view != "3d" || !views.empty()))
     return usage("--replay takes the coil, views and duration from the session; drop --coil, --record, --view, --views, "
                  "--duration");
+  // Known before the session, not after it: a session is not lost to a typo.
+  for (const std::string& path : {record, out})
+    if (!path.empty())
+      if (const std::string why = io::whyNotWritable(path); !why.empty()) {
+        std::fprintf(stderr, "coilsim practice: %s\n", why.c_str());
+        return kExitUsage;
+      }
   try {
     const planning::PracticeCase pc = planning::loadCase(casePath);
 #ifdef COILSIM_HAVE_UI

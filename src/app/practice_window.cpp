@@ -52,9 +52,21 @@ class WindowScorer : public ui::RunObserver {
   }
   void closed(const Model& m, const State& s, const DeploymentState& ds) override {
     const planning::ScoreSheet score = scorer_->finish(m, s, ds);
-    if (!outputs_->record.empty()) io::writeFileAtomic(outputs_->record, io::formatJson(scorer_->recording(scorer_->time())));
     const std::string text = io::formatJson(planning::scoreJson(score));
-    if (!outputs_->out.empty()) io::writeFileAtomic(outputs_->out, text);
+    // Each file on its own, and the sheet printed whatever happens to them:
+    // a disk that filled up during the session must not take the score with it.
+    const std::pair<std::string, std::string> files[] = {
+        {outputs_->record, outputs_->record.empty() ? "" : io::formatJson(scorer_->recording(scorer_->time()))},
+        {outputs_->out, text}};
+    for (const auto& [path, body] : files) {
+      if (path.empty()) continue;
+      try {
+        io::writeFileAtomic(path, body);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "coilsim practice: %s\n", e.what());
+        outputs_->exitCode = kExitFailure;
+      }
+    }
     std::fputs(text.c_str(), stdout);
     if (!score.ok) {
       std::fprintf(stderr, "coilsim practice: %s\n", score.error.c_str());

@@ -67,6 +67,17 @@ std::string formatJson(const nlohmann::ordered_json& value) {
   return out + "\n";
 }
 
+std::string whyNotWritable(const std::string& path) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return path + ": the directory " + dir.string() + " does not exist";
+  if (::access(dir.c_str(), W_OK) != 0) return systemError("cannot write in " + dir.string(), path);
+  if (fs::is_directory(target, ec)) return path + ": is a directory, not a file name";
+  return {};
+}
+
 void writeFileAtomic(const std::string& path, const std::string& text) {
   namespace fs = std::filesystem;
   const fs::path target(path);

@@ -17,4 +17,9 @@ std::string formatJson(const nlohmann::ordered_json& value);  // keeps the key o
 // naming the path (and the system's reason) on failure; no temporary is left.
 void writeFileAtomic(const std::string& path, const std::string& text);
 
+// Empty if writeFileAtomic(path, ...) can create the file (its directory
+// exists and is writable), else why not, naming the path. For commands that
+// would otherwise learn it only after a long run or a whole session.
+std::string whyNotWritable(const std::string& path);
+
 }  // namespace coilsim::io

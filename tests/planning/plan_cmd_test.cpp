@@ -162,6 +162,16 @@ TEST(PlanCommand, BadInputExitsTwoNamingTheProblem) {
   EXPECT_NE(log.find("--sac"), std::string::npos) << log;
   EXPECT_EQ(run("plan --out /tmp/x", &log), 2);
   EXPECT_EQ(run("practice " + kSource + "/scenes/cases/sphere-7mm-wide-neck.json --out /tmp/x.json", &log), 2);
+  // An unwritable session or score file is refused before the session (a
+  // window would otherwise lose a whole practice to a typo at its end).
+  for (const char* opt : {"--record", "--out"}) {
+    EXPECT_EQ(run("practice " + kSource + "/scenes/cases/sphere-7mm-wide-neck.json --window " + std::string(opt) +
+                      " /no-such-dir/s.json",
+                  &log),
+              2)
+        << opt;
+    EXPECT_NE(log.find("/no-such-dir/s.json: the directory /no-such-dir does not exist"), std::string::npos) << log;
+  }
 }
 
 TEST(PracticeCommand, ReplayWritesTheSameScoreSheet) {
