@@ -133,7 +133,9 @@ struct Hidden {
   std::vector<std::pair<std::string, double>> magnitude;  // fitted name -> truth (SI)
 };
 
-void checkHidden(const Measurement& sk, const Hidden& h) {
+// `refit` false: points (1) and (2) only (for an effect whose refit is
+// guarded by an open bug in a test of its own).
+void checkHidden(const Measurement& sk, const Hidden& h, bool refit = true) {
   ensureValidationEffects();
   ModelParams truth = truthOf(sk);
   truth.effects.push_back(EffectRegistry::global().use(h.effect));
@@ -156,6 +158,7 @@ void checkHidden(const Measurement& sk, const Hidden& h) {
   const CandidateResult& top = d.candidates.front();
   EXPECT_EQ(top.effect, h.effect) << d.verdict;
   EXPECT_TRUE(top.significant);
+  if (!refit) return;
   // (3) With it: the control's error level, and the magnitude.
   const CandidateResult* c = nullptr;
   for (const auto& x : d.candidates)
@@ -294,6 +297,36 @@ TEST(HiddenEffect, SelfContactStacksTheLoops) {
         EXPECT_GE(c.distance, 0.9 * 2 * kWire) << "segments " << i << " and " << j;
       }
   }
+}
+
+// Self-contact found in a dynamic bench: the loops lie flat (reference
+// normal along y) and wind upwards (pitch 0.3 mm on a 0.2 mm wire), so that
+// loops pushed out at 50 mm/s land on each other under gravity; captured
+// 0.5 s after each push. A static stage at 20 mm (before any touch) holds E.
+// The static continuation cannot be used past the first touch
+// (kStaticSelfContactDiverges); dynamics can: about 8 s for the diagnosis.
+Measurement selfContactBench() {
+  Measurement sk = skeleton(0.3e-3);
+  sk.tip.normal = Vec3::UnitY();
+  sk.stages.resize(1);
+  sk.stages[0].deployed = 0.02;
+  sk.stages[0].name = "20 mm";
+  addDynamicStage(sk, 0.05, 1.0, 1.5);
+  sk.stages.back().name = "50 mm";
+  addDynamicStage(sk, 0.075, 1.5, 2.0);
+  sk.stages.back().name = "75 mm";
+  return sk;
+}
+
+// self_contact has no parameter to recover (it is switched on at its
+// defaults): points (1) and (2) of checkHidden.
+TEST(HiddenEffect, SelfContactIsRankedFirstInADynamicBench) {
+  checkHidden(selfContactBench(), {"self_contact", [](EffectUse&) {}, {}}, false);
+}
+
+TEST(HiddenEffect, SelfContactRefitReachesTheControlError) {
+  SKIP_IF_OPEN(coilsim::test::kRefitStallsWithContacts);
+  checkHidden(selfContactBench(), {"self_contact", [](EffectUse&) {}, {}});
 }
 
 TEST(HiddenEffect, Drag) {
