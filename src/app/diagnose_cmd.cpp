@@ -72,16 +72,8 @@ int runDiagnose(const std::vector<std::string>& argsIn) {
   } catch (const std::invalid_argument& e) {
     return usage(std::string("--candidates: ") + e.what());
   }
-  try {
-    std::filesystem::create_directories(a.out);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "coilsim diagnose: cannot create the output directory %s: %s\n", a.out.c_str(), e.what());
-    return kExitUsage;
-  }
-  SimOptions so;
-  so.spacing = units::mmToM(a.spacingMm);
-  so.pushIncrement = units::mmToM(a.pushIncrementMm);
-  StageSimulator sim(m, so);
+  if (!makeOutputDirectory("diagnose", a.out)) return kExitUsage;
+  StageSimulator sim(m, simOptionsOf(a));
   const Comparison cmp(m);
   say("diagnose: " + a.file + ": " + std::to_string(m.stages.size()) + " stage(s), " + std::to_string(sim.beams()) + " beams");
   o.progress = [&](const std::string& s) { say("diagnose: " + s); };

@@ -41,6 +41,23 @@ double r6(double v) { return std::isfinite(v) ? std::stod(fmt("%.6g", v)) : v; }
 
 }  // namespace
 
+SimOptions simOptionsOf(const WorkbenchArgs& a) {
+  SimOptions so;
+  so.spacing = units::mmToM(a.spacingMm);
+  so.pushIncrement = units::mmToM(a.pushIncrementMm);
+  return so;
+}
+
+bool makeOutputDirectory(const std::string& command, const std::string& dir) {
+  try {
+    std::filesystem::create_directories(dir);
+    return true;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "coilsim %s: cannot create the output directory %s: %s\n", command.c_str(), dir.c_str(), e.what());
+    return false;
+  }
+}
+
 std::string parseWorkbenchArgs(const std::vector<std::string>& args, bool allowEffects, WorkbenchArgs& a) {
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
@@ -269,16 +286,8 @@ int runValidate(const std::vector<std::string>& args) {
   } catch (const std::invalid_argument& e) {
     return usage(std::string("--effects: ") + e.what());
   }
-  try {
-    std::filesystem::create_directories(a.out);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "coilsim validate: cannot create the output directory %s: %s\n", a.out.c_str(), e.what());
-    return kExitUsage;
-  }
-  SimOptions so;
-  so.spacing = units::mmToM(a.spacingMm);
-  so.pushIncrement = units::mmToM(a.pushIncrementMm);
-  StageSimulator sim(m, so);
+  if (!makeOutputDirectory("validate", a.out)) return kExitUsage;
+  StageSimulator sim(m, simOptionsOf(a));
   const Comparison cmp(m);
   say("validate: " + a.file + ": " + std::to_string(m.stages.size()) + " stage(s), " + std::to_string(sim.beams()) +
       " beams; the base model at the file's nominal values...");

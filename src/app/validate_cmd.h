@@ -29,6 +29,13 @@ struct WorkbenchArgs {
 // `allowEffects`); returns an error message or "".
 std::string parseWorkbenchArgs(const std::vector<std::string>& args, bool allowEffects, WorkbenchArgs& a);
 
+// The stage simulator's options from the command line's (mm there, SI here).
+validation::SimOptions simOptionsOf(const WorkbenchArgs& a);
+
+// Creates `dir` and its parents; false, after saying why (naming `command`
+// and the directory), if it cannot.
+bool makeOutputDirectory(const std::string& command, const std::string& dir);
+
 // One JSON object per stage: name, node_error_mean, node_error_sd,
 // stage_error, mean_displacement_mm, mean_distance_mm, and where the
 // residual lies (components, thirds of the arc length, noise floor).

@@ -103,9 +103,7 @@ int runValidateWindow(const WorkbenchArgs& a, const WindowArgs& w) {
     return kExitUsage;
   }
   ensureValidationEffects();
-  SimOptions so;
-  so.spacing = units::mmToM(a.spacingMm);
-  so.pushIncrement = units::mmToM(a.pushIncrementMm);
+  const SimOptions so = simOptionsOf(a);
   StageSimulator sim(m, so);
   const Comparison cmp(m);
   std::fprintf(stderr, "validate: %s: the base model at the file's nominal values...\n", a.file.c_str());
