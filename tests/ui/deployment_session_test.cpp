@@ -9,39 +9,16 @@
 #include "physics/effect.h"
 #include "ui/device_input.h"
 #include "ui/session.h"
+#include "support/helix_deployment.h"
 
 namespace coilsim::ui {
 namespace {
 
 // A 40 mm platinum helix (5 mm loops) pushed out of a rigid catheter at the
 // origin along +x, under gravity.
-struct Scene {
-  Model model;
-  Deployment dep;
-  State start;
-  DeploymentState ds0;
-};
+using Scene = test::HelixDeployment;
 
-Scene makeScene(double initialMm = 2.0) {
-  Scene s;
-  ModelDef def;
-  def.effects.push_back(EffectRegistry::global().use("gravity"));
-  def.damping = {1.0, 0.0};
-  def.timeStep = 1e-3;
-  DeploymentDef d;
-  d.coilLength = 0.040;
-  d.coilBeams = 40;
-  d.coilRest = makeHelix(d.coilLength, d.coilBeams, 0.005, 0.0008, true);
-  d.coilMaterial = {7.5e9, shearModulusOf(7.5e9, 0.39), 21450};
-  d.coilSection = circularSection(0.15e-3, 0.39);
-  d.tip.normal = Vec3(0, 0, 1);
-  d.maxPushSpeed = 0.05;
-  s.dep = addDeployment(d, def);
-  s.model = compileModel(def);
-  s.start = makeState(s.model);
-  s.ds0 = initDeployment(s.dep, s.model, s.start, initialMm * 1e-3, 0.0);
-  return s;
-}
+Scene makeScene(double initialMm = 2.0) { return test::makeHelixDeployment(40.0, initialMm); }
 
 DeviceCommand cmd(DeviceCommand::Kind k, double rate, double amount = 0) {
   DeviceCommand c;

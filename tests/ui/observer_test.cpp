@@ -13,6 +13,7 @@
 #include "ui/session.h"
 #include "ui/setup.h"
 #include "ui/views.h"
+#include "support/helix_deployment.h"
 
 namespace coilsim::ui {
 namespace {
@@ -20,33 +21,9 @@ namespace {
 constexpr double kDt = 1e-3;
 
 // A platinum helix of `lengthMm` in a rigid catheter at the origin along +x, 2 mm out.
-struct Scene {
-  Model model;
-  Deployment dep;
-  State start;
-  DeploymentState ds0;
-};
+using Scene = test::HelixDeployment;
 
-Scene makeScene(double lengthMm = 40.0) {
-  Scene s;
-  ModelDef def;
-  def.effects.push_back(EffectRegistry::global().use("gravity"));
-  def.damping = {1.0, 0.0};
-  def.timeStep = kDt;
-  DeploymentDef d;
-  d.coilLength = lengthMm * 1e-3;
-  d.coilBeams = int(lengthMm);
-  d.coilRest = makeHelix(d.coilLength, d.coilBeams, 0.005, 0.0008, true);
-  d.coilMaterial = {7.5e9, shearModulusOf(7.5e9, 0.39), 21450};
-  d.coilSection = circularSection(0.15e-3, 0.39);
-  d.tip.normal = Vec3(0, 0, 1);
-  d.maxPushSpeed = 0.05;
-  s.dep = addDeployment(d, def);
-  s.model = compileModel(def);
-  s.start = makeState(s.model);
-  s.ds0 = initDeployment(s.dep, s.model, s.start, 2e-3, 0.0);
-  return s;
-}
+Scene makeScene(double lengthMm = 40.0) { return test::makeHelixDeployment(lengthMm); }
 
 DeviceCommand push(double speed, double distance = 0) {
   DeviceCommand c;

@@ -1,0 +1,42 @@
+#pragma once
+// A platinum helix (5 mm loops, 0.8 mm pitch, 0.15 mm wire) of `lengthMm`
+// in a rigid catheter at the origin along +x, `initialMm` out, under
+// gravity, 1 ms steps: the deployment the ui tests drive.
+#include "physics/deployment.h"
+#include "physics/effect.h"
+#include "physics/model.h"
+#include "physics/rest_shape.h"
+#include "physics/section.h"
+#include "physics/state.h"
+
+namespace coilsim::test {
+
+struct HelixDeployment {
+  Model model;
+  Deployment dep;
+  State start;
+  DeploymentState ds0;
+};
+
+inline HelixDeployment makeHelixDeployment(double lengthMm = 40.0, double initialMm = 2.0) {
+  HelixDeployment s;
+  ModelDef def;
+  def.effects.push_back(EffectRegistry::global().use("gravity"));
+  def.damping = {1.0, 0.0};
+  def.timeStep = 1e-3;
+  DeploymentDef d;
+  d.coilLength = lengthMm * 1e-3;
+  d.coilBeams = int(lengthMm);
+  d.coilRest = makeHelix(d.coilLength, d.coilBeams, 0.005, 0.0008, true);
+  d.coilMaterial = {7.5e9, shearModulusOf(7.5e9, 0.39), 21450};
+  d.coilSection = circularSection(0.15e-3, 0.39);
+  d.tip.normal = Vec3(0, 0, 1);
+  d.maxPushSpeed = 0.05;
+  s.dep = addDeployment(d, def);
+  s.model = compileModel(def);
+  s.start = makeState(s.model);
+  s.ds0 = initDeployment(s.dep, s.model, s.start, initialMm * 1e-3, 0.0);
+  return s;
+}
+
+}  // namespace coilsim::test
