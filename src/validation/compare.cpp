@@ -6,9 +6,14 @@ namespace {
 // Arc length on the measured curve where the catheter tip is: 0 when the
 // centre line starts at the tip; the tip's distance along the exit
 // direction before the first point when sampling starts further out.
+// Otherwise the tip lies near the curve's start (the first point is off it
+// by noise): it is projected onto the start only, arc length at most twice
+// its distance from the first point, because loops stacked over the tip
+// (or crossing back past it) pass closer to it further along the curve.
 double tipOffset(const SmoothingSpline& sp, const Measurement& m) {
   const double along = (sp.at(0) - m.tip.position).dot(m.tip.direction);
-  return along > 0 ? -along : sp.project(m.tip.position);
+  if (along > 0) return -along;
+  return sp.project(m.tip.position, 2 * (sp.at(0) - m.tip.position).norm() + 1e-4);
 }
 
 // The arc length of a measured curve is biased: noise lengthens it, the

@@ -195,16 +195,16 @@ double SmoothingSpline::arcAt(double t) const {
   return arc_[k - 1] + f * (arc_[k] - arc_[k - 1]);
 }
 
-double SmoothingSpline::project(const Vec3& p) const {
+double SmoothingSpline::project(const Vec3& p, double maxArc) const {
   size_t best = 0;
   double bestD = INFINITY;
-  for (size_t k = 0; k < tTable_.size(); k += 4) {
+  for (size_t k = 0; k < tTable_.size() && arc_[k] <= maxArc; k += 4) {
     const double d = (eval(tTable_[k], 0) - p).squaredNorm();
     if (d < bestD) bestD = d, best = k;
   }
   // Refine on the neighbouring table entries by golden-section-free scanning.
   const size_t lo = best >= 4 ? best - 4 : 0, hi = std::min(tTable_.size() - 1, best + 4);
-  for (size_t k = lo; k <= hi; ++k) {
+  for (size_t k = lo; k <= hi && arc_[k] <= maxArc; ++k) {
     const double d = (eval(tTable_[k], 0) - p).squaredNorm();
     if (d < bestD) bestD = d, best = k;
   }

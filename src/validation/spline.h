@@ -9,6 +9,7 @@
 // the noise variance sigma^2 (the point_sigma of the file or, when it gives
 // none, an estimate from the data's local second differences); the noise
 // along the curve goes into the parameterisation, not the residual.
+#include <cmath>
 #include <vector>
 
 #include "physics/math.h"
@@ -34,8 +35,9 @@ class SmoothingSpline {
   double lambda() const { return lambda_; }
   double sigmaUsed() const { return sigma_; }
 
-  // Arc length where the curve passes closest to `p` (coarse table, refined).
-  double project(const Vec3& p) const;
+  // Arc length where the curve passes closest to `p` (coarse table, refined),
+  // searching only arc lengths up to maxArc.
+  double project(const Vec3& p, double maxArc = INFINITY) const;
   // The same, searching only near curve parameter t (within one knot interval).
   double projectNear(const Vec3& p, double t) const;
 
