@@ -102,6 +102,41 @@ TEST(SelfContactTest, PressedCrossingNeverPassesThrough) {
   EXPECT_GT(p.closest, kRadius);  // pressed in by less than one radius
 }
 
+// The end-of-step check (Effect::endStep) on a pair the step's contacts did
+// not hold: a straight rod (1 mm beams) whose tail has been folded back
+// within the step so that segment 8 lies across segment 2, their centre lines 0.1 mm apart (wires
+// of radius 0.15 mm: 0.2 mm deep). Missed while the contact list is empty;
+// not once the pair is in it (the penalty's business); not for a graze
+// shallower than 5 % of 2 r.
+TEST(SelfContactTest, EndOfStepCheckCatchesAPairCrossedWithinTheStep) {
+  const int beams = 10;
+  ModelDef def = test::modelOf({test::straightRod(10e-3, beams, test::platinum(),
+                                                  circularSection(kRadius, test::kPlatinumPoisson))});
+  def.effects.push_back(EffectRegistry::global().use("self_contact"));
+  const Model model = compileModel(def);
+  const EffectUse& use = model.effects.back();
+  const auto cross = [&](double centreDistance) {
+    State state = makeState(model);
+    RodState& r = state.rods[0];
+    r.work.x0.assign(r.x.begin(), r.x.end());  // the start of the step: straight, no pair near
+    // Segment 8 across segment 2; its neighbours 7 and 9 rise 2 mm from it
+    // (the hairpin's other segments stay more than 2 r from the rod).
+    r.x[7] = Vec3(2.5e-3, -0.5e-3, centreDistance + 2e-3);
+    r.x[8] = Vec3(2.5e-3, -0.5e-3, centreDistance);
+    r.x[9] = Vec3(2.5e-3, 0.5e-3, centreDistance);
+    r.x[10] = Vec3(2.5e-3, 0.5e-3, centreDistance + 2e-3);
+    return state;
+  };
+  State deep = cross(0.1e-3);
+  const std::string missed = use.effect->endStep(model, use.values, deep);
+  EXPECT_NE(missed.find("segment 2"), std::string::npos) << missed;
+  EXPECT_NE(missed.find("segment 8"), std::string::npos) << missed;
+  use.effect->beginStep(model, use.values, deep);  // now the pair is in the step's contacts
+  EXPECT_EQ(use.effect->endStep(model, use.values, deep), "");
+  State graze = cross(0.29e-3);  // 10 um deep: 3 % of 2 r
+  EXPECT_EQ(use.effect->endStep(model, use.values, graze), "");
+}
+
 TEST(SelfContactTest, SwitchedOffTheCrossingPassesThrough) {
   const Press p = pressCrossing(false);
   EXPECT_GT(p.flips, 0);

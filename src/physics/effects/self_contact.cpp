@@ -32,6 +32,12 @@ class SelfContact final : public Effect {
     const ContactLaw law = lawOf(p);
     detectRodContacts(model, state, true, p[2], law, law);
   }
+  // A loop snapping onto another within one step, from a start where the
+  // pair was beyond the margin and not closing, is outside the step's
+  // implicit solve: the step is retaken in substeps (as for rod_contact).
+  std::string endStep(const Model& model, std::span<const double> p, const State& state) const override {
+    return checkRodContacts(model, state, true, p[2]);
+  }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
     applyContacts(c.state.contact.self, c.state, lawOf(p), c.model.timeStep, out);
   }
