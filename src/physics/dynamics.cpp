@@ -150,7 +150,7 @@ struct Snapshot {
 // turn a node by radians within one step, beyond what one linearised step
 // follows; the same interval in 2, 4 ... kMaxParts substeps usually can.
 // Healthy steps never come here, so the hot path pays nothing.
-constexpr int kMaxParts = 16;
+constexpr int kMaxParts = 64;
 
 StepReport retryInSubsteps(const Model& model, State& state, const Snapshot& start, long& iterations) {
   StepReport report;

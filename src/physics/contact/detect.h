@@ -63,4 +63,12 @@ inline constexpr double kMissedContact = 0.05;
 // about margin / 2 in the step.
 std::string checkRodContacts(const Model& model, const State& state, bool sameRod, double margin);
 
+// After a step: why a segment went deeper than kMissedContact of its radius
+// into a wall beyond what the step's contact planes allowed, or empty. A
+// plane is the wall's tangent at detection; a node sliding fast along a
+// curved wall leaves it (1 mm along a 7 mm sphere is 0.14 mm deep, and a
+// frictionless coil tip skating at 1 m/s does that within one step). Only
+// segments that moved more than `margin` in the step are queried.
+std::string checkWallContacts(const Model& model, const State& state, double margin);
+
 }  // namespace coilsim

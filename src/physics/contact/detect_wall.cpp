@@ -9,7 +9,6 @@
 namespace coilsim {
 namespace {
 
-
 struct Nearest {
   SegmentTriangle hit;
   int triangle = -1;
@@ -207,6 +206,45 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
     }
     rc.wallPenetration = reportContacts(rc.wall, r, law, rc.wallForce);
   }
+}
+
+std::string checkWallContacts(const Model& model, const State& state, double margin) {
+  static thread_local std::vector<int> stack, candidates;
+  std::string missed;
+  double worst = 0;
+  for (size_t k = 0; k < state.rods.size(); ++k) {
+    const RodState& r = state.rods[k];
+    if (!r.active || model.rods[k].role == RodRole::Catheter || r.work.x0.size() < size_t(r.activeNodes)) continue;
+    const std::vector<ContactPoint>& list = r.contact.wall;
+    for (int e = 0; e + 1 < r.activeNodes; ++e) {
+      const Vec3 &a = r.x[e], &b = r.x[e + 1];
+      // A segment that moved less than the margin stayed within what its
+      // contacts' planes describe (their reach includes the margin).
+      if (std::max((a - r.work.x0[e]).norm(), (b - r.work.x0[e + 1]).norm()) <= margin) continue;
+      const double radius = (1 + kWallSkin) * 0.5 * (r.nodes[e].radius + r.nodes[e + 1].radius);
+      // How deep the step's own contact planes let it go.
+      double known = 0;
+      const auto first = std::lower_bound(list.begin(), list.end(), e,
+                                          [](const ContactPoint& c, int seg) { return c.segment < seg; });
+      for (auto c = first; c != list.end() && c->segment == e; ++c)
+        if (c->gap < 0 || c->closing[0] || c->closing[1])
+          known = std::max({known, c->radius - c->normal.dot(a - c->anchor), c->radius - c->normal.dot(b - c->anchor)});
+      for (size_t o = 0; o < model.obstacles.size(); ++o) {
+        if (!model.obstacles[o].contact || o >= model.obstacleTrees.size()) continue;
+        const ObstacleTree& tree = *model.obstacleTrees[o];
+        const Nearest n = nearestFeature(tree, a, b, 2 * radius, stack, candidates);
+        if (n.triangle < 0) continue;
+        const double depth = -makeContact(tree, n, candidates, e, int(o), radius).gap;
+        if (depth - known <= kMissedContact * radius || depth - known <= worst) continue;
+        worst = depth - known;
+        missed = "rod '" + model.rods[k].name + "' segment " + std::to_string(e) + " went " +
+                 std::to_string(int(std::lround(depth * 1e6))) + " um into obstacle '" + model.obstacles[o].name +
+                 "' within the step, " + std::to_string(int(std::lround(worst * 1e6))) +
+                 " um deeper than its contact planes allowed";
+      }
+    }
+  }
+  return missed;
 }
 
 }  // namespace coilsim

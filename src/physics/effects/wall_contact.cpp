@@ -33,6 +33,11 @@ class WallContact final : public Effect {
   void beginStep(const Model& model, std::span<const double> p, State& state) const override {
     detectWallContacts(model, state, p[2], lawOf(p));
   }
+  // A node sliding fast along a curved wall leaves the tangent plane its
+  // step was solved with: the step is retaken in substeps (detect.h).
+  std::string endStep(const Model& model, std::span<const double> p, const State& state) const override {
+    return checkWallContacts(model, state, p[2]);
+  }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
     applyContacts(c.state.contact.wall, c.state, lawOf(p), c.model.timeStep, out);
   }
