@@ -92,7 +92,9 @@ nlohmann::ordered_json resultJson(const Model& model, const State& state, const 
                   {"max_step_us", 1e6 * st.maxStepSeconds},
                   {"newton_iterations", st.newtonIterations},
                   {"blowups", state.blowups},
-                  {"substepped_steps", state.substepped}};
+                  {"substepped_steps", state.substepped},
+                  {"max_wall_penetration_um", 1e6 * st.maxWallPenetration},
+                  {"max_wall_penetration_of_radius", st.maxWallPenetrationOfRadius}};
   if (run.statics)
     out["static"] = {{"converged", run.statics->converged},
                      {"increments", run.statics->increments},

@@ -71,6 +71,10 @@ struct StepStats {
   double lastStepSeconds = 0;   // wall time of the last step
   double totalStepSeconds = 0;  // wall time of all steps
   double maxStepSeconds = 0;
+  // Deepest wall penetration seen at the start of a step (contact
+  // detection), in m and as a fraction of the wire radius there; a penalty
+  // too soft for the coil shows here (dynamics.cpp warns once past 10 %).
+  double maxWallPenetration = 0, maxWallPenetrationOfRadius = 0;
 };
 
 struct State {

@@ -196,6 +196,13 @@ TEST_P(ContactScene, ShortenedDeploymentKeepsTheCoilInTheSac) {
   const double bend = std::min(reach, loopRadius), sag = bend - std::sqrt(bend * bend - a * a);
   EXPECT_GT(c.minAboveNeck, -sag) << "deeper below the neck plane than a loop can sag over the opening";
   EXPECT_EQ(c.beyondNeck > 0, c.minAboveNeck < 0) << c.beyondNeck << " mm beyond the neck plane (planning)";
+  // And during the deployment, as the run's own contact detection saw it.
+  const double during = result["stats"]["max_wall_penetration_of_radius"].get<double>();
+  std::printf("[ measured ] %s: deepest wall penetration during the run %.1f um (%.0f %% of r)\n", sc.scene,
+              result["stats"]["max_wall_penetration_um"].get<double>(), 100 * during);
+  if (!coilsim::test::kTransientWallPenetration.open) {
+    EXPECT_LT(during, 0.1);
+  }
   std::printf("[ measured ] %s: %d nodes; nearest node centre %.5f mm inside the wall (wire radius r = %.4f mm: "
               "penetration %.2e mm); farthest node %.3f mm from the sac centre (R %.2f); lowest %.3f mm above the neck "
               "plane (a loop may sag %.3f mm over the neck), %.3f mm of coil beyond it\n",

@@ -44,7 +44,7 @@ struct RodContacts {
   std::vector<double> wallForce;  // (nnode) normal force from walls per node, N
   std::vector<double> selfForce;  // (nnode) normal force from self-contact per node, N
   std::vector<double> rodForce;   // (nnode) normal force from other rods per node, N
-  double wallPenetration = 0;     // deepest wall penetration at the last detection, m (>= 0)
+  double wallPenetration = 0;     // deepest wall penetration of the wire (not its skin) at the last detection, m (>= 0)
   // Temporal coherence of the wall search: per segment, a distance within
   // which no wall triangle lay at its last full query (0: none known), and
   // its two end points then. Valid while the rod keeps `wallClearNodes`

@@ -193,6 +193,16 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
               q.anchor -= (hit.distance - radius - q.gap) * q.normal;
               q.gap = hit.distance - radius;
             }
+            // Nor may it claim more than the segment's true penetration, the
+            // nearest feature's (c.gap, sided by its pseudo-normal): where the
+            // face is within the skin of one node (so kept above) its plane
+            // can still cut the free space at the other node, and claimed
+            // 50-120 um of a node resting on a neck fillet 8 um clear of
+            // the mesh.
+            if (q.gap < c.gap) {
+              q.anchor -= (c.gap - q.gap) * q.normal;
+              q.gap = c.gap;
+            }
             if (!markClosing(q, r, h) && q.gap > margin) continue;
             updateContact(q, findPrevious(rc.previous, q, r), r, law, h);
             rc.wall.push_back(q);
@@ -204,7 +214,11 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
         rc.wallClearAt[2 * e] = a, rc.wallClearAt[2 * e + 1] = b;
       }
     }
-    rc.wallPenetration = reportContacts(rc.wall, r, law, rc.wallForce);
+    reportContacts(rc.wall, r, law, rc.wallForce);
+    // The wire's own penetration: the contacts' gaps are the skinned capsule's.
+    rc.wallPenetration = 0;
+    for (const ContactPoint& c : rc.wall)
+      rc.wallPenetration = std::max(rc.wallPenetration, -c.gap - c.radius * kWallSkin / (1 + kWallSkin));
   }
 }
 
