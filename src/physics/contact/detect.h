@@ -68,7 +68,10 @@ std::string checkRodContacts(const Model& model, const State& state, bool sameRo
 // plane is the wall's tangent at detection; a node sliding fast along a
 // curved wall leaves it (1 mm along a 7 mm sphere is 0.14 mm deep, and a
 // frictionless coil tip skating at 1 m/s does that within one step). Only
-// segments that moved more than `margin` in the step are queried.
+// segments that moved farther than the nearest wall outside the step's
+// solve (at most `margin`) are queried: a node at rest against a wall,
+// listed but not closing, that a jolt moves in within the step (up to the
+// margin deep) is caught too.
 std::string checkWallContacts(const Model& model, const State& state, double margin);
 
 }  // namespace coilsim

@@ -232,17 +232,25 @@ std::string checkWallContacts(const Model& model, const State& state, double mar
     const std::vector<ContactPoint>& list = r.contact.wall;
     for (int e = 0; e + 1 < r.activeNodes; ++e) {
       const Vec3 &a = r.x[e], &b = r.x[e + 1];
-      // A segment that moved less than the margin stayed within what its
-      // contacts' planes describe (their reach includes the margin).
-      if (std::max((a - r.work.x0[e]).norm(), (b - r.work.x0[e + 1]).norm()) <= margin) continue;
       const double radius = (1 + kWallSkin) * 0.5 * (r.nodes[e].radius + r.nodes[e + 1].radius);
-      // How deep the step's own contact planes let it go.
-      double known = 0;
+      // How deep the step's own contact planes (those in its implicit solve)
+      // let it go, and how near the others were: a wall not listed was more
+      // than the margin away, a listed one out of the solve (apart and not
+      // closing at the start) `gap` away. A segment that moved less than
+      // that (plus the tolerance) cannot have gone in; sliding along the
+      // planes in the solve takes more than the margin to leave them by
+      // the tolerance on any wall we mesh (0.23 mm on a 7 mm sphere).
+      double known = 0, nearestOut = margin;
       const auto first = std::lower_bound(list.begin(), list.end(), e,
                                           [](const ContactPoint& c, int seg) { return c.segment < seg; });
-      for (auto c = first; c != list.end() && c->segment == e; ++c)
+      for (auto c = first; c != list.end() && c->segment == e; ++c) {
         if (c->gap < 0 || c->closing[0] || c->closing[1])
           known = std::max({known, c->radius - c->normal.dot(a - c->anchor), c->radius - c->normal.dot(b - c->anchor)});
+        else
+          nearestOut = std::min(nearestOut, c->gap);
+      }
+      const double moved = std::max((a - r.work.x0[e]).norm(), (b - r.work.x0[e + 1]).norm());
+      if (moved <= std::max(0.0, nearestOut) + kMissedContact * radius) continue;
       for (size_t o = 0; o < model.obstacles.size(); ++o) {
         if (!model.obstacles[o].contact || o >= model.obstacleTrees.size()) continue;
         const ObstacleTree& tree = *model.obstacleTrees[o];
