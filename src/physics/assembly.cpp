@@ -10,8 +10,10 @@ double assembleRod(const Model& model, int rodIndex, RodState& rod, double time,
   return assembleRodInto(model, rodIndex, rod, time, loadFactor, t);
 }
 
-double assembleRodInto(const Model& model, int rodIndex, RodState& rod, double time, double loadFactor,
-                       const TangentRequest& tangent) {
+namespace {
+
+double assemble(const Model& model, int rodIndex, RodState& rod, double time, double loadFactor,
+                const TangentRequest& tangent, std::vector<NodeCoupling>* coupling) {
   const RodModel& rm = model.rods[rodIndex];
   RodWorkspace& w = rod.work;
   for (auto& f : w.force) f.setZero();
@@ -45,11 +47,24 @@ double assembleRodInto(const Model& model, int rodIndex, RodState& rod, double t
     w.force[l.node].head<3>() += loadFactor * l.force;
     w.force[l.node].tail<3>() += loadFactor * l.moment;
   }
-  RodForces out{w.force, w.effectK, w.effectD, w.effectsTouchedMatrix};
-  const EffectContext ctx{model, rm, rod, time, loadFactor};
+  RodForces out{w.force, w.effectK, w.effectD, w.effectsTouchedMatrix, coupling};
+  const EffectContext ctx{model, rm, rod, time, loadFactor, coupling != nullptr};
   for (const EffectUse& u : model.effects)
     if (u.enabled) u.effect->apply(ctx, u.values, out);
   return energy;
+}
+
+}  // namespace
+
+double assembleRodInto(const Model& model, int rodIndex, RodState& rod, double time, double loadFactor,
+                       const TangentRequest& tangent) {
+  return assemble(model, rodIndex, rod, time, loadFactor, tangent, nullptr);
+}
+
+double assembleRodStatic(const Model& model, int rodIndex, RodState& rod, double loadFactor,
+                         std::vector<NodeCoupling>& coupling) {
+  coupling.clear();
+  return assemble(model, rodIndex, rod, 0.0, loadFactor, {}, &coupling);
 }
 
 void collectFixedDofs(const RodModel& model, RodState& rod) {

@@ -26,6 +26,13 @@ struct TangentRequest {
 double assembleRodInto(const Model& model, int rodIndex, RodState& rod, double time, double loadFactor,
                        const TangentRequest& tangent);
 
+// For the static solver: forces at load factor `loadFactor` with the effects
+// told it is a static solve (EffectContext::statics), no elastic tangent,
+// and the effects' couplings between nodes collected in `coupling` (cleared
+// first). Returns the elastic energy (J).
+double assembleRodStatic(const Model& model, int rodIndex, RodState& rod, double loadFactor,
+                         std::vector<NodeCoupling>& coupling);
+
 // Rotational inertia of node i about global axes: R I_material R^T. Inline:
 // the dynamic step calls it for every node.
 inline Mat3 nodeInertiaGlobal(const RodState& rod, const Quat& q, int node) {

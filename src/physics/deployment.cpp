@@ -15,10 +15,6 @@ Quat twistAboutTangent(double angle) { return Quat(Eigen::AngleAxisd(angle, Vec3
 // the tip at deployed length l is l - u_j.
 double outside(const Deployment& dep, double l, int j) { return l - (dep.coilLength - j * dep.spacing); }
 
-// The frame the coil has at the tip: the tip node's frame turned by the twist.
-Quat coilFrameAtTip(const Deployment& dep, const RodState& chain, double twist) {
-  return (chain.q[dep.tipNode] * twistAboutTangent(twist)).normalized();
-}
 
 NodeProps coilNodeProps(const Deployment& dep, double length) {
   const double rho = dep.material.density;
@@ -97,13 +93,11 @@ void rebuildChain(const Deployment& dep, const Model& model, RodState& chain, co
   }
 }
 
-// Hermite interpolation of a position between two samples with unit tangents.
-Vec3 hermite(const Vec3& p0, const Vec3& t0, const Vec3& p1, const Vec3& t1, double h, double s) {
-  const double s2 = s * s, s3 = s2 * s;
-  return (2 * s3 - 3 * s2 + 1) * p0 + (s3 - 2 * s2 + s) * h * t0 + (-2 * s3 + 3 * s2) * p1 + (s3 - s2) * h * t1;
-}
-
 }  // namespace
+
+Quat coilFrameAtTip(const Deployment& dep, const RodState& chain, double twist) {
+  return (chain.q[dep.tipNode] * twistAboutTangent(twist)).normalized();
+}
 
 void Deployment::restPose(double j, Vec3& x, Quat& f) const {
   j = std::clamp(j, 0.0, double(coilBeams));

@@ -117,6 +117,20 @@ DeploymentState initDeployment(const Deployment& dep, const Model& model, State&
 void setDeployment(const Deployment& dep, const Model& model, State& state, DeploymentState& ds, double deployed,
                    double twist);
 
+// setDeployment for a static continuation: the coil outside also slides
+// along its present centre line by the length pushed (the material at arc s
+// from the tip goes where the arc s + delta was, beyond the distal end
+// along its rest shape), as a slow push moves it. setDeployment alone
+// leaves the nodes where they were and squeezes the pushed length into the
+// first beam (a 2 mm push is a 100 N imbalance on a 0.2 mm wire), which a
+// Newton iteration must then carry through every loop; with contacts each
+// of its steps is held back where loops could pass through each other.
+void slideDeployment(const Deployment& dep, const Model& model, State& state, DeploymentState& ds, double deployed,
+                     double twist);
+
+// The frame the coil has at the tip: the tip node's frame turned by the twist.
+Quat coilFrameAtTip(const Deployment& dep, const RodState& chain, double twist);
+
 // Moves the catheter back by `offset` m along its held base's axis (the
 // exit direction for the rigid tip; the pusher holds the coil, so the
 // deployed length grows by the same amount).

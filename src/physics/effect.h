@@ -26,6 +26,19 @@ struct EffectContext {
   const RodState& state;
   double time = 0;        // s
   double loadFactor = 1;  // static continuation scales external effects by this
+  // A static solve (solveStatic), not a time step: velocities are zero and
+  // there is no step length. Contacts then act without friction or damping:
+  // with Coulomb friction a static equilibrium depends on the path that led
+  // to it, which a static solve does not follow.
+  bool statics = false;
+};
+
+// Stiffness between two nodes of one rod that are not neighbours (a contact
+// between distant segments of a coil), or between neighbours through a
+// contact: -d force[row] / d position[col], global, N/m.
+struct NodeCoupling {
+  int row = 0, col = 0;
+  Mat3 stiffness = Mat3::Zero();
 };
 
 // Where an effect writes for one rod; all arrays have one entry per node.
@@ -34,6 +47,11 @@ struct RodForces {
   std::vector<Mat6>& stiffness;  // -d force / d (position, rotation), added to the implicit matrix
   std::vector<Mat6>& damping;    // -d force / d (velocity, angular velocity)
   bool& touchedMatrix;           // set true when writing stiffness or damping
+  // Only the static solver asks for couplings (it solves with a general
+  // sparse factorisation when there are any); a dynamic step's
+  // block-tridiagonal solve holds neighbours only, so there it is nullptr
+  // and contacts lump what they can onto the diagonal blocks.
+  std::vector<NodeCoupling>* coupling = nullptr;
 };
 
 class Effect {
@@ -57,6 +75,14 @@ class Effect {
   // says what was missed, and the step is taken again in substeps, each
   // with its own beginStep. Default: nothing missed.
   virtual std::string endStep(const Model&, std::span<const double>, const State&) const { return {}; }
+  // The largest fraction in (0, 1] of a proposed static Newton update of rod
+  // `rod` (dx: one position change per active node) that this effect
+  // accepts: contacts refuse updates that would carry one segment through
+  // another, which no penalty can undo afterwards. Default: all of it.
+  virtual double limitStaticUpdate(const Model&, std::span<const double>, const State&, int /*rod*/,
+                                   std::span<const Vec3> /*dx*/) const {
+    return 1.0;
+  }
 };
 
 // One effect switched into a model, with its parameter values (SI).

@@ -45,8 +45,12 @@ struct StaticReport {
 
 // Static equilibrium under the full load (gravity, loads, effects), reached
 // by load stepping with Newton iterations on the co-rotational tangent;
-// failing increments are bisected. Velocities are zeroed. On failure the
-// State holds the last converged increment and the report says why.
+// failing increments are bisected. Velocities are zeroed. Contacts are
+// detected again before every Newton iteration and act frictionless, with
+// their stiffness between distant nodes (a general sparse solve then) and a
+// penalty smoothed over a thousandth of the contact distance (contact/
+// response.cpp); no iteration carries a segment through another. On failure
+// the State holds the last converged increment and the report says why.
 StaticReport solveStatic(const Model& model, State& state, const StaticOptions& options = {});
 
 struct Energy {

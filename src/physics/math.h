@@ -35,4 +35,11 @@ inline Mat3 skew(const Vec3& a) {
 // Any unit vector orthogonal to the unit vector `v` (deterministic).
 Vec3 anyPerpendicular(const Vec3& v);
 
+// Cubic Hermite interpolation between samples p0, p1 with unit tangents t0,
+// t1 a chord h apart, at s in [0, 1] (s outside extrapolates the cubic).
+inline Vec3 hermite(const Vec3& p0, const Vec3& t0, const Vec3& p1, const Vec3& t1, double h, double s) {
+  const double s2 = s * s, s3 = s2 * s;
+  return (2 * s3 - 3 * s2 + 1) * p0 + (s3 - 2 * s2 + s) * h * t0 + (-2 * s3 + 3 * s2) * p1 + (s3 - s2) * h * t1;
+}
+
 }  // namespace coilsim

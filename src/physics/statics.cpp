@@ -1,4 +1,6 @@
 #include <Eigen/LU>
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
 #include <cmath>
 
 #include "physics/assembly.h"
@@ -105,20 +107,70 @@ void consistentTangent(const RodState& r, GeneralTridiagonal& K) {
   }
 }
 
+// Solves K dx = rhs with the effects' couplings between distant nodes (a
+// coil's loops pressing on each other), which the block-tridiagonal LU
+// cannot hold: a general sparse LU of the whole rod. Statics only, where a
+// Newton iteration without the coupling moves two loops in contact as if
+// each leant on a fixed wall, so a stack of loops could not sag together
+// (kStaticSelfContactDiverges in tests/support/known_bugs.h). K must be
+// filled and its fixed DOFs applied; the solution goes to K.rhs.
+bool solveCoupled(GeneralTridiagonal& K, const std::vector<NodeCoupling>& coupling, const std::vector<unsigned>& fixed,
+                  int n) {
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(size_t(n) * 36 * 3 + coupling.size() * 9);
+  const auto block = [&](int bi, int bj, const auto& m, int size) {
+    for (int a = 0; a < size; ++a)
+      for (int b = 0; b < size; ++b)
+        if (m(a, b) != 0) t.emplace_back(6 * bi + a, 6 * bj + b, m(a, b));
+  };
+  for (int i = 0; i < n; ++i) block(i, i, K.diag[i], 6);
+  for (int i = 0; i + 1 < n; ++i) block(i + 1, i, K.lower[i], 6), block(i, i + 1, K.upper[i], 6);
+  for (const NodeCoupling& c : coupling) {
+    if (c.row >= n || c.col >= n) continue;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        if (!(fixed[c.row] & (1u << a)) && !(fixed[c.col] & (1u << b)) && c.stiffness(a, b) != 0)
+          t.emplace_back(6 * c.row + a, 6 * c.col + b, c.stiffness(a, b));
+  }
+  Eigen::SparseMatrix<double> A(6 * n, 6 * n);
+  A.setFromTriplets(t.begin(), t.end());
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+  lu.compute(A);
+  if (lu.info() != Eigen::Success) return false;
+  Eigen::VectorXd b(6 * n);
+  for (int i = 0; i < n; ++i) b.segment<6>(6 * i) = K.rhs[i];
+  const Eigen::VectorXd x = lu.solve(b);
+  if (lu.info() != Eigen::Success || !x.allFinite()) return false;
+  for (int i = 0; i < n; ++i) K.rhs[i] = x.segment<6>(6 * i);
+  return true;
+}
+
+// Forces at the current poses, the effects' per-step preparation (contact
+// detection) done first: a contact's plane and partner point must be where
+// the other surface is now, or two loops pressing on each other each push
+// against where the other was.
+void assembleAt(const Model& model, int k, State& state, double lambda, std::vector<NodeCoupling>& coupling) {
+  for (const EffectUse& u : model.effects)
+    if (u.enabled) u.effect->beginStep(model, u.values, state);
+  assembleRodStatic(model, k, state.rods[k], lambda, coupling);
+}
+
 // Newton iterations at load factor lambda on the consistent tangent; an
 // indefinite or singular tangent is shifted towards its diagonal.
-NewtonResult newton(const Model& model, int k, RodState& r, double lambda, const StaticOptions& o, int& iterations) {
+NewtonResult newton(const Model& model, int k, State& state, double lambda, const StaticOptions& o, int& iterations) {
+  RodState& r = state.rods[k];
   RodWorkspace& w = r.work;
   const int n = r.activeNodes;
   double length = 0;
   for (int e = 0; e + 1 < n; ++e) length += r.beams[e].length;
-  std::vector<Vec3> xStart(n);
+  std::vector<Vec3> xStart(n), dx(n);
   std::vector<Quat> qStart(n);
-  assembleRod(model, k, r, 0.0, lambda, false);
+  std::vector<NodeCoupling> coupling;
   GeneralTridiagonal K;
   K.resize(n);
   for (int it = 0; it < o.maxIterations; ++it) {
     ++iterations;
+    assembleAt(model, k, state, lambda, coupling);
     bool solved = false;
     // An indefinite or singular tangent is shifted towards its diagonal.
     for (double shift = 0; !solved && shift <= 1e6; shift = shift == 0 ? 1e-6 : shift * 10) {
@@ -130,28 +182,33 @@ NewtonResult newton(const Model& model, int k, RodState& r, double lambda, const
         for (int d = 0; d < 6; ++d)
           if (w.fixedMask[i] & (1u << d)) K.fix(i, d);
       }
-      solved = K.solve(n);
+      solved = coupling.empty() ? K.solve(n) : solveCoupled(K, coupling, w.fixedMask, n);
     }
     if (!solved) return NewtonResult::Singular;
     for (int i = 0; i < n; ++i) w.rhs[i] = K.rhs[i];
     for (int i = 0; i < n; ++i) xStart[i] = r.x[i], qStart[i] = r.q[i];
-    double dx = 0, dr = 0;
+    double dxMax = 0, dr = 0;
     for (int i = 0; i < n; ++i) {
-      dx = std::max(dx, w.rhs[i].head<3>().norm());
+      dxMax = std::max(dxMax, w.rhs[i].head<3>().norm());
       dr = std::max(dr, w.rhs[i].tail<3>().norm());
     }
-    if (!std::isfinite(dx) || !std::isfinite(dr)) return NewtonResult::Unhealthy;
+    if (!std::isfinite(dxMax) || !std::isfinite(dr)) return NewtonResult::Unhealthy;
     // Full Newton steps: a residual-based line search would reject them,
     // since a linearised step stretches a slender rod to second order and
     // the next iteration, not a shorter step, removes that. Only steps that
-    // would turn a node by more than half a radian are scaled down.
-    const double alpha = std::min(1.0, 0.5 / std::max(dr, 1e-300));
+    // would turn a node by more than half a radian are scaled down, and
+    // those that would carry one segment through another (contacts).
+    double alpha = std::min(1.0, 0.5 / std::max(dr, 1e-300));
+    for (int i = 0; i < n; ++i) dx[i] = alpha * w.rhs[i].head<3>();
+    double contactFraction = 1.0;
+    for (const EffectUse& u : model.effects)
+      if (u.enabled) contactFraction = std::min(contactFraction, u.effect->limitStaticUpdate(model, u.values, state, k, dx));
+    alpha *= contactFraction;
     for (int i = 0; i < n; ++i) {
       r.x[i] = xStart[i] + alpha * w.rhs[i].head<3>();
       r.q[i] = (quatExp(alpha * w.rhs[i].tail<3>()) * qStart[i]).normalized();
     }
-    assembleRod(model, k, r, 0.0, lambda, false);
-    if (alpha * dx < o.positionTolerance * length && alpha * dr < o.rotationTolerance) return NewtonResult::Converged;
+    if (alpha * dxMax < o.positionTolerance * length && alpha * dr < o.rotationTolerance) return NewtonResult::Converged;
   }
   return NewtonResult::NotConverged;
 }
@@ -178,7 +235,7 @@ StaticReport solveStatic(const Model& model, State& state, const StaticOptions& 
       const double next = std::min(1.0, lambda + increment);
       const std::vector<Vec3> x0 = r.x;
       const std::vector<Quat> q0 = r.q;
-      const NewtonResult res = newton(model, int(k), r, next, o, rep.iterations);
+      const NewtonResult res = newton(model, int(k), state, next, o, rep.iterations);
       ++rep.increments;
       if (res == NewtonResult::Converged && checkHealth(model, state).empty()) {
         lambda = next;

@@ -55,23 +55,9 @@ StaticOptions staticOptions() {
   return o;
 }
 
-// Static equilibrium with the effects' per-step preparation (contact
-// detection for self_contact) done first, as a time step does it; with
-// contacts the detection is repeated once at the new equilibrium, since the
-// pairs in touch may have changed.
-StaticReport solveWithEffects(const Built& b, State& s) {
-  bool detects = false;
-  for (const EffectUse& u : b.model.effects)
-    if (u.enabled && u.name() == "self_contact") detects = true;
-  StaticReport r;
-  for (int pass = 0; pass < (detects ? 2 : 1); ++pass) {
-    for (const EffectUse& u : b.model.effects)
-      if (u.enabled) u.effect->beginStep(b.model, u.values, s);
-    r = solveStatic(b.model, s, staticOptions());
-    if (!r.converged) break;
-  }
-  return r;
-}
+// Static equilibrium; solveStatic detects contacts (self_contact) at every
+// Newton iteration itself.
+StaticReport solveWithEffects(const Built& b, State& s) { return solveStatic(b.model, s, staticOptions()); }
 
 // Pushes from the state's current deployed length to `target` in increments
 // of at most `step`, an equilibrium after each; halves the increment on failure.
@@ -81,7 +67,7 @@ std::string pushStatic(const Built& b, State& s, DeploymentState& ds, double tar
     const double next = std::min(target, ds.deployed + inc);
     const State saved = s;
     const DeploymentState savedDs = ds;
-    setDeployment(b.dep, b.model, s, ds, next, twist);
+    slideDeployment(b.dep, b.model, s, ds, next, twist);
     const StaticReport r = solveWithEffects(b, s);
     if (r.converged) {
       inc = std::min(step, inc * 2);

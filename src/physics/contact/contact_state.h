@@ -18,6 +18,7 @@ struct ContactPoint {
   int otherSegment = -1;      // segment of the other rod (-1 for walls)
   bool line = false;          // wall: line contact along the segment; else a point at s
   double s = 0;               // point on the segment, in [0, 1] (line: force centroid)
+  double otherS = 0;          // pair contacts: the point on the other segment, in [0, 1]
   Vec3 normal = Vec3::UnitZ();  // unit, the direction this rod is pushed
   Vec3 anchor = Vec3::Zero();   // a point of the other surface (wall plane point or other centre-line point)
   double radius = 0;          // clearance the centre line keeps from `anchor` plane (r or r1 + r2)

@@ -63,6 +63,16 @@ inline constexpr double kMissedContact = 0.05;
 // about margin / 2 in the step.
 std::string checkRodContacts(const Model& model, const State& state, bool sameRod, double margin);
 
+// For a static Newton update dx (one position change per active node of rod
+// `rod`): the largest fraction in (0, 1] of it after which no segment of the
+// rod has come closer than half its present centre-line distance to a
+// non-adjacent segment of its own (sameRod) or to a segment of another rod
+// (held still meanwhile). A segment moves at most as far as its farther
+// node, so centre lines never cross within the update: a full Newton step
+// can carry a sagging loop through the wire it is about to land on, and no
+// penalty brings it back from the far side.
+double safeStaticFraction(const State& state, int rod, std::span<const Vec3> dx, bool sameRod);
+
 // After a step: why a segment went deeper than kMissedContact of its radius
 // into a wall beyond what the step's contact planes allowed, or empty. A
 // plane is the wall's tangent at detection; a node sliding fast along a

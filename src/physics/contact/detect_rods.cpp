@@ -116,7 +116,7 @@ void detectRodContacts(const Model& model, State& state, bool sameRod, double ma
     if (gap > margin && !closing) return;
     ContactPoint c;
     c.segment = si, c.other = kj, c.otherSegment = sj;
-    c.s = p.s;
+    c.s = p.s, c.otherS = p.t;
     c.normal = normal;
     c.anchor = p.q;
     c.radius = ra + rb;
@@ -125,7 +125,7 @@ void detectRodContacts(const Model& model, State& state, bool sameRod, double ma
     c.closing[0] = closing;
     ContactPoint d = c;
     d.segment = sj, d.other = ki, d.otherSegment = si;
-    d.s = p.t;
+    d.s = p.t, d.otherS = p.s;
     d.normal = -c.normal;
     d.anchor = p.p;
     d.otherVelocity = va;
@@ -203,6 +203,54 @@ std::string checkRodContacts(const Model& model, const State& state, bool sameRo
     }
   }
   return missed;
+}
+
+double safeStaticFraction(const State& state, int rod, std::span<const Vec3> dx, bool sameRod) {
+  const RodState& r = state.rods[rod];
+  if (!takesPart(r)) return 1.0;
+  const int n = r.activeNodes;
+  // Each segment: how far it moves at most (as far as its farther node).
+  static thread_local std::vector<double> moves;
+  moves.assign(n - 1, 0.0);
+  for (int e = 0; e + 1 < n; ++e) moves[e] = std::max(dx[e].norm(), dx[e + 1].norm());
+  double fraction = 1.0;
+  // The closest points of two segments move relative to each other by a
+  // convex combination of their end nodes' relative motions, so by at most
+  // the largest of those: loops resting on each other and moving together
+  // are not held back. `db` is the other segment's node motion (zero for a
+  // rod held still). Pairs already within a quarter of r1 + r2 (a coil
+  // inside its catheter) are the penalty's business: a limit would stall
+  // the update there.
+  const auto limit = [&](int i, const Vec3& b0, const Vec3& b1, const Vec3& db0, const Vec3& db1, double bound,
+                         double touch) {
+    const Vec3 &a0 = r.x[i], &a1 = r.x[i + 1];
+    // A cheap lower bound of the distance first: most pairs are far apart.
+    const double apart = (0.5 * (a0 + a1 - b0 - b1)).norm() - 0.5 * ((a1 - a0).norm() + (b1 - b0).norm());
+    if (!(fraction * bound > 0.5 * apart)) return;
+    const double move = std::max({(dx[i] - db0).norm(), (dx[i] - db1).norm(), (dx[i + 1] - db0).norm(),
+                                  (dx[i + 1] - db1).norm()});
+    if (!(fraction * move > 0.5 * apart)) return;
+    const double d = closestSegmentSegment(a0, a1, b0, b1).distance;
+    if (d > 0.25 * touch && fraction * move > 0.5 * d) fraction = 0.5 * d / move;
+  };
+  if (sameRod) {
+    for (int i = 0; i + 1 < n; ++i)
+      for (int j = i + 2; j + 1 < n; ++j)
+        limit(i, r.x[j], r.x[j + 1], dx[j], dx[j + 1], moves[i] + moves[j], segmentRadius(r, i) + segmentRadius(r, j));
+    return fraction;
+  }
+  const Vec3 still = Vec3::Zero();
+  for (size_t k = 0; k < state.rods.size(); ++k) {
+    const RodState& o = state.rods[k];
+    if (int(k) == rod || !takesPart(o)) continue;
+    for (int i = 0; i + 1 < n; ++i)
+      for (int j = 0; j + 1 < o.activeNodes; ++j) {
+        const double ra = segmentRadius(r, i), rb = segmentRadius(o, j);
+        if (shareAnEnd(r.x[i], r.x[i + 1], o.x[j], o.x[j + 1], 1e-3 * std::min(ra, rb))) continue;
+        limit(i, o.x[j], o.x[j + 1], still, still, moves[i], ra + rb);
+      }
+  }
+  return fraction;
 }
 
 }  // namespace coilsim

@@ -100,8 +100,75 @@ const ContactPoint* findPrevious(std::span<const ContactPoint> list, const Conta
   return best;
 }
 
+namespace {
+
+// A static solve: no friction, no damping, and the penalty smoothed over
+// a length delta = kStaticSmoothing (r1 + r2): f = k delta ln(1 + exp(d /
+// delta)) for a depth d, stiffness k / (1 + exp(-d / delta)). With the
+// penalty's kink a Newton iteration on loops resting on one another cycles
+// for ever: a pair pressing is pushed out to just apart, where its
+// linearisation has no stiffness and the next step sags back through it
+// (several pairs of nearly parallel segments take turns). Smoothed, a pair
+// just apart keeps its stiffness. At rest under a load F a pair keeps
+// delta ln(1 + F / (k delta)) of the hard law's depth F / k: both well
+// under a micrometre for loops resting under gravity.
+// Point contacts give their exact Jacobian for fixed s, t and normal (the
+// normal's own turning adds (d / distance) k (1 - n n^T), a few per cent of
+// it: Newton converges linearly at that rate near the end).
+constexpr double kStaticSmoothing = 1e-3;
+
+struct Smoothed {
+  double force = 0, stiffness = 0;  // per unit of penalty stiffness: m and 1
+};
+
+Smoothed smoothed(double depth, double delta) {
+  const double x = depth / delta;
+  if (x > 30) return {depth, 1.0};
+  if (x < -30) return {};
+  return {delta * std::log1p(std::exp(x)), 1.0 / (1.0 + std::exp(-x))};
+}
+
+void applyStatic(std::span<const ContactPoint> contacts, const RodState& rod, const ContactLaw& law, bool sameRod,
+                 RodForces& out) {
+  for (const ContactPoint& c : contacts) {
+    const double delta = kStaticSmoothing * c.radius;
+    const Mat3 nn = c.normal * c.normal.transpose();
+    if (c.line) {
+      // Each node against its own plane, with half the segment's length: the diagonal block is exact.
+      const double half = 0.5 * law.stiffness * (rod.x[c.segment + 1] - rod.x[c.segment]).norm();
+      for (int end = 0; end < 2; ++end) {
+        const Smoothed p = smoothed(nodePenetration(c, rod.x, end), delta);
+        if (p.stiffness <= 0) continue;
+        out.force[c.segment + end].head<3>() += half * p.force * c.normal;
+        out.stiffness[c.segment + end].topLeftCorner<3, 3>() += half * p.stiffness * nn;
+        out.touchedMatrix = true;
+      }
+      continue;
+    }
+    const Smoothed p = smoothed(c.radius - c.normal.dot(along(rod.x, c, c.s) - c.anchor), delta);
+    if (p.stiffness <= 0) continue;
+    out.touchedMatrix = true;
+    const int nodes[4] = {c.segment, c.segment + 1, c.otherSegment, c.otherSegment + 1};
+    const double w[4] = {1 - c.s, c.s, -(1 - c.otherS), -c.otherS};
+    const int columns = sameRod ? 4 : 2;
+    const double k = law.stiffness * p.stiffness;
+    for (int i = 0; i < 2; ++i) {
+      out.force[nodes[i]].head<3>() += law.stiffness * p.force * w[i] * c.normal;
+      out.stiffness[nodes[i]].topLeftCorner<3, 3>() += k * w[i] * w[i] * nn;
+      for (int j = 0; j < columns; ++j)
+        if (j != i && w[i] * w[j] != 0) out.coupling->push_back({nodes[i], nodes[j], k * w[i] * w[j] * nn});
+    }
+  }
+}
+
+}  // namespace
+
 void applyContacts(std::span<const ContactPoint> contacts, const RodState& rod, const ContactLaw& law, double h,
-                   RodForces& out) {
+                   RodForces& out, bool sameRod) {
+  if (out.coupling) {
+    applyStatic(contacts, rod, law, sameRod, out);
+    return;
+  }
   for (const ContactPoint& c : contacts) {
     const NormalEval n = evalNormal(c, rod, law);
     if (!n.touching) continue;

@@ -44,6 +44,10 @@ class RodContact final : public Effect {
       applyContacts(std::span(list).subspan(i, 1), c.state, withCatheter ? catheter : coil, c.model.timeStep, out);
     }
   }
+  double limitStaticUpdate(const Model&, std::span<const double>, const State& state, int rod,
+                           std::span<const Vec3> dx) const override {
+    return safeStaticFraction(state, rod, dx, false);
+  }
 };
 
 }  // namespace

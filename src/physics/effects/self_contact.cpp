@@ -39,7 +39,11 @@ class SelfContact final : public Effect {
     return checkRodContacts(model, state, true, p[2]);
   }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
-    applyContacts(c.state.contact.self, c.state, lawOf(p), c.model.timeStep, out);
+    applyContacts(c.state.contact.self, c.state, lawOf(p), c.model.timeStep, out, true);
+  }
+  double limitStaticUpdate(const Model&, std::span<const double>, const State& state, int rod,
+                           std::span<const Vec3> dx) const override {
+    return safeStaticFraction(state, rod, dx, true);
   }
 };
 
