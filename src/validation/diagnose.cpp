@@ -52,13 +52,20 @@ Candidate candidateFor(const std::string& effect, const Measurement& m) {
     c.params = {"catheter_compliance.bending_stiffness_n_mm2"};
     c.offValue = {1e6 * 1e-6};
     c.typicalValue = {10.0 * 1e-6};
-  } else if (const Effect* e = EffectRegistry::global().find(effect); e && !e->params().empty() && effect != "self_contact") {
+  } else if (effect == "self_contact") {
+    // Its magnitude is where loops touch: at 0 they pass through each other
+    // (off), at 1 the wire's own diameter. (Its penalty stiffness only sets
+    // how far they press in: well under a micrometre.)
+    c.params = {"self_contact.contact_radius_scale"};
+    c.offValue = {0.0};
+    c.typicalValue = {1.0};
+  } else if (const Effect* e = EffectRegistry::global().find(effect); e && !e->params().empty()) {
     const ParamSpec& s = e->params()[0];
     c.params = {effect + "." + std::string(s.name)};
     c.offValue = {0.0};
     c.typicalValue = {s.defaultValue * s.toSI};
   }
-  // self_contact and parameterless effects: switched on at their defaults, nothing fitted.
+  // Parameterless effects: switched on, nothing fitted.
   return c;
 }
 

@@ -160,18 +160,25 @@ inline constexpr KnownBug kStaticSelfContactDiverges{
     "known bug: solveStatic does not converge once loops of one coil press on each other (self_contact); "
     "see tests/support/known_bugs.h"};
 
-// The validation refit stalls once contacts shape the stages: in the
-// dynamic self-contact bench of tests/validation/hidden_effect_test.cpp
-// (truth E 5.6 GPa, nominal 7.0) diagnose ranks self_contact first (82 % of
-// the residual, significant; base error 25x the control's), but its refit
-// moves E from the baseline's 6.20 GPa to 6.85 +- 0.0006 GPa and leaves
-// stage errors 0.0107 / 0.0056 / 0.0195 against the control's 0.0023 /
-// 0.0013 / 0.0018 (1.5x allowed). The tiny sigma says the finite-difference
-// Jacobian sees the contacts switching on and off, not a smooth residual.
+// The validation workbench cannot use dynamic stages in which loops land
+// on one another. In the dynamic bench of tests/validation/
+// hidden_effect_test.cpp (loops pushed out at 50 mm/s fall onto each
+// other; truth E 5.6 GPa, nominal 7.0) diagnose ranked self_contact first
+// (82 % of the residual) but its refit moved E to 6.85 +- 0.0006 GPa and
+// left stage errors 0.0107 / 0.0056 / 0.0195 against the control's 0.0023
+// / 0.0013 / 0.0018: the tiny sigma says the finite-difference Jacobian saw
+// contacts switching, not a smooth residual. The stages are chaotic: after
+// the static solver's rework (an identical static start, up to round-off)
+// the same data gave a base fit of E 4.07 instead of 6.20 GPa and ranked
+// drag first (self_contact screened at 7 %). Static stages with loops
+// resting on one another are smooth in the parameters and the workbench
+// finds self_contact there (HiddenEffect.SelfContact); the dynamic bench's
+// test skips until a fit can follow such data (an ensemble of
+// perturbed starts, or fitting statistics of the shape, not the nodes).
 inline constexpr KnownBug kRefitStallsWithContacts{
     true,
-    "known bug: the validation refit stalls when contacts shape the stages (finite differences across contact "
-    "switching); see tests/support/known_bugs.h"};
+    "known bug: dynamic stages in which loops land on one another are chaotic and the validation fit cannot "
+    "follow them; see tests/support/known_bugs.h"};
 
 // Wall penetration during a deployment, not only at its end: the scene runs
 // record the deepest wall penetration of the wire at each step's detection

@@ -272,42 +272,62 @@ TEST(HiddenEffect, Buoyancy) {
                    {{"buoyancy.medium_density_g_cm3", rhoF}}});
 }
 
-// The bench a hidden self_contact test needs: loops horizontal (reference
-// normal along y), right-handed, winding upwards with a pitch of 0.3 mm on a
-// 0.2 mm wire, so that gravity lays each loop on the one below. Without
-// self_contact the third loop sinks 0.36 mm below the first (they
-// interpenetrate); with it the continuation must reach 75 mm and keep
-// every pair of non-adjacent segments at least a wire diameter apart (less
-// 10 %: the penalty lets them in a little). Until the static solver
-// converges with pressed contacts this is the whole check.
-TEST(HiddenEffect, SelfContactStacksTheLoops) {
-  SKIP_IF_OPEN(coilsim::test::kStaticSelfContactDiverges);
+// The stacked-loop bench: loops horizontal (reference normal along y),
+// right-handed, winding upwards with a pitch of 0.3 mm on a 0.2 mm wire, so
+// that gravity lays each loop on the one below. Without self_contact the
+// third loop sinks 0.36 mm below the first (they interpenetrate).
+Measurement stackedLoops() {
   Measurement sk = skeleton(0.3e-3);
   sk.tip.normal = Vec3::UnitY();
+  return sk;
+}
+
+// With self_contact the static continuation reaches 75 mm and keeps every
+// pair of non-adjacent segments at least a wire diameter apart (less 10 %:
+// the penalty lets them in a little), the contact's own geometry.
+TEST(HiddenEffect, SelfContactStacksTheLoops) {
+  SKIP_IF_OPEN(coilsim::test::kStaticSelfContactDiverges);
+  const Measurement sk = stackedLoops();
   ensureValidationEffects();
   ModelParams p = truthOf(sk);
   p.effects.push_back(EffectRegistry::global().use("self_contact"));
   StageSimulator sim(sk, coarse());
   const std::vector<StageSim> r = sim.run(p, false);
+  int pairsBelowPitch = 0;
   for (const StageSim& st : r) {
     ASSERT_TRUE(st.ok) << st.message;
     for (size_t i = 0; i + 1 < st.x.size(); ++i)
       for (size_t j = i + 2; j + 1 < st.x.size(); ++j) {
         const SegmentPair c = closestSegmentSegment(st.x[i], st.x[i + 1], st.x[j], st.x[j + 1]);
         EXPECT_GE(c.distance, 0.9 * 2 * kWire) << "segments " << i << " and " << j;
+        if (c.distance < 0.3e-3) ++pairsBelowPitch;
       }
   }
+  // The loops do rest on one another (closer than their rest pitch).
+  EXPECT_GT(pairsBelowPitch, 0);
 }
 
-// Self-contact found in a dynamic bench: the loops lie flat (reference
-// normal along y) and wind upwards (pitch 0.3 mm on a 0.2 mm wire), so that
-// loops pushed out at 50 mm/s land on each other under gravity; captured
-// 0.5 s after each push. A static stage at 20 mm (before any touch) holds E.
-// The static continuation cannot be used past the first touch
-// (kStaticSelfContactDiverges); dynamics can: about 8 s for the diagnosis.
-Measurement selfContactBench() {
-  Measurement sk = skeleton(0.3e-3);
-  sk.tip.normal = Vec3::UnitY();
+// Self-contact hidden in the stacked-loop bench, touching at 1.6 wire
+// diameters (0.32 mm, more than the 0.3 mm pitch: the loops rest on one
+// another and hold each other apart; a wound coil's outer diameter is that
+// much larger than the diameter of the solid wire with its stiffness).
+// Static stages at 25, 50 and 75 mm. Its magnitude is the contact
+// distance, which sets the stack's height: recovered within its
+// uncertainty. (At 1.3 the 2 mm fit trades the contact distance for E:
+// 1.22 +- 0.02 and E 7.2 GPa for 5.6; fitted with 1 mm beams, as the data
+// were made, 1.28 +- 0.01 and 5.8 GPa. At 2.0 the base fit makes the coil
+// rigid, E 315 GPa, and the screening sees no contact to switch on.)
+TEST(HiddenEffect, SelfContact) {
+  SKIP_IF_OPEN(coilsim::test::kStaticSelfContactDiverges);
+  checkHidden(stackedLoops(), {"self_contact", [](EffectUse& e) { e.set("contact_radius_scale", 1.6); },
+                               {{"self_contact.contact_radius_scale", 1.6}}});
+}
+
+// The same loops pushed out at 50 mm/s land on each other under gravity
+// (captured 0.5 s after each push; a static stage at 20 mm, before any
+// touch, holds E). Such stages are chaotic: see kRefitStallsWithContacts.
+Measurement selfContactDynamicBench() {
+  Measurement sk = stackedLoops();
   sk.stages.resize(1);
   sk.stages[0].deployed = 0.02;
   sk.stages[0].name = "20 mm";
@@ -318,15 +338,9 @@ Measurement selfContactBench() {
   return sk;
 }
 
-// self_contact has no parameter to recover (it is switched on at its
-// defaults): points (1) and (2) of checkHidden.
-TEST(HiddenEffect, SelfContactIsRankedFirstInADynamicBench) {
-  checkHidden(selfContactBench(), {"self_contact", [](EffectUse&) {}, {}}, false);
-}
-
-TEST(HiddenEffect, SelfContactRefitReachesTheControlError) {
+TEST(HiddenEffect, SelfContactInADynamicBench) {
   SKIP_IF_OPEN(coilsim::test::kRefitStallsWithContacts);
-  checkHidden(selfContactBench(), {"self_contact", [](EffectUse&) {}, {}});
+  checkHidden(selfContactDynamicBench(), {"self_contact", [](EffectUse&) {}, {}});
 }
 
 TEST(HiddenEffect, Drag) {

@@ -61,7 +61,8 @@ inline constexpr double kMissedContact = 0.05;
 // again in substeps (Effect::endStep), each with its own detection. Costs a
 // pass over the contact lists, or a grid scan when some node moved more than
 // about margin / 2 in the step.
-std::string checkRodContacts(const Model& model, const State& state, bool sameRod, double margin);
+std::string checkRodContacts(const Model& model, const State& state, bool sameRod, double margin,
+                             double radiusScale = 1);
 
 // For a static Newton update dx (one position change per active node of rod
 // `rod`): the largest fraction in (0, 1] of it after which no segment of the
@@ -71,7 +72,8 @@ std::string checkRodContacts(const Model& model, const State& state, bool sameRo
 // node, so centre lines never cross within the update: a full Newton step
 // can carry a sagging loop through the wire it is about to land on, and no
 // penalty brings it back from the far side.
-double safeStaticFraction(const State& state, int rod, std::span<const Vec3> dx, bool sameRod);
+// Pairs count as touching at radiusScale (r1 + r2) (ContactLaw); none when it is 0.
+double safeStaticFraction(const State& state, int rod, std::span<const Vec3> dx, bool sameRod, double radiusScale = 1);
 
 // After a step: why a segment went deeper than kMissedContact of its radius
 // into a wall beyond what the step's contact planes allowed, or empty. A

@@ -97,6 +97,12 @@ void detectRodContacts(const Model& model, State& state, bool sameRod, double ma
     std::swap(previous[k], list);
     list.clear();
   }
+  // No contact distance, no contacts: not even a closing pair's barrier,
+  // which would stop centre lines from crossing.
+  if (!(law.radiusScale > 0)) {
+    for (RodState& r : state.rods) (sameRod ? r.contact.selfForce : r.contact.rodForce).assign(r.x.size(), 0.0);
+    return;
+  }
   // The reach includes what a segment sweeps in the step at its start
   // velocity, so a pair that would meet within the step is found (response.h).
   const double h = model.timeStep;
@@ -106,7 +112,8 @@ void detectRodContacts(const Model& model, State& state, bool sameRod, double ma
     const double ra = segmentRadius(ri, si), rb = segmentRadius(rj, sj);
     if (!sameRod && shareAnEnd(a0, a1, b0, b1, 1e-3 * std::min(ra, rb))) return;
     const SegmentPair p = closestSegmentSegment(a0, a1, b0, b1);
-    const double gap = p.distance - ra - rb;
+    const double touch = law.radiusScale * (ra + rb);
+    const double gap = p.distance - touch;
     if (p.distance <= 1e-12 * ra) return;
     // Closing speed of the pair along the line of centres, at the start of the step.
     const Vec3 normal = (p.p - p.q) / p.distance;
@@ -119,7 +126,7 @@ void detectRodContacts(const Model& model, State& state, bool sameRod, double ma
     c.s = p.s, c.otherS = p.t;
     c.normal = normal;
     c.anchor = p.q;
-    c.radius = ra + rb;
+    c.radius = touch;
     c.gap = gap;
     c.otherVelocity = vb;
     c.closing[0] = closing;
@@ -161,7 +168,7 @@ const ContactPoint* listed(const State& state, bool sameRod, int k, int si, int 
 
 }  // namespace
 
-std::string checkRodContacts(const Model& model, const State& state, bool sameRod, double margin) {
+std::string checkRodContacts(const Model& model, const State& state, bool sameRod, double margin, double radiusScale) {
   // A pair left out at the start was more than `margin` apart: it can only
   // have gone deeper than the tolerance if its two segments together moved
   // more than margin + tolerance (the distance between two segments changes
@@ -173,7 +180,7 @@ std::string checkRodContacts(const Model& model, const State& state, bool sameRo
     for (int i = 0; i < r.activeNodes; ++i) smallest = std::min(smallest, r.nodes[i].radius);
   }
   if (!(moved > 0)) return {};
-  const bool scan = 2 * moved > margin + 2 * kMissedContact * smallest;
+  const bool scan = 2 * moved > margin + 2 * kMissedContact * radiusScale * smallest;
   std::string missed;
   double deepest = 0;
   const auto check = [&](int ki, int si, int kj, int sj) {
@@ -181,8 +188,9 @@ std::string checkRodContacts(const Model& model, const State& state, bool sameRo
     const Vec3 &a0 = ri.x[si], &a1 = ri.x[si + 1], &b0 = rj.x[sj], &b1 = rj.x[sj + 1];
     const double ra = segmentRadius(ri, si), rb = segmentRadius(rj, sj);
     if (!sameRod && shareAnEnd(a0, a1, b0, b1, 1e-3 * std::min(ra, rb))) return;
-    const double depth = ra + rb - closestSegmentSegment(a0, a1, b0, b1).distance;
-    if (depth <= kMissedContact * (ra + rb) || depth <= deepest) return;
+    const double touch = radiusScale * (ra + rb);
+    const double depth = touch - closestSegmentSegment(a0, a1, b0, b1).distance;
+    if (depth <= kMissedContact * touch || depth <= deepest) return;
     const ContactPoint* c = listed(state, sameRod, ki, si, kj, sj);
     if (c && (c->gap < 0 || c->closing[0])) return;  // in the step's implicit solve: the penalty's business
     deepest = depth;
@@ -205,9 +213,9 @@ std::string checkRodContacts(const Model& model, const State& state, bool sameRo
   return missed;
 }
 
-double safeStaticFraction(const State& state, int rod, std::span<const Vec3> dx, bool sameRod) {
+double safeStaticFraction(const State& state, int rod, std::span<const Vec3> dx, bool sameRod, double radiusScale) {
   const RodState& r = state.rods[rod];
-  if (!takesPart(r)) return 1.0;
+  if (!takesPart(r) || !(radiusScale > 0)) return 1.0;
   const int n = r.activeNodes;
   // Each segment: how far it moves at most (as far as its farther node).
   static thread_local std::vector<double> moves;
@@ -236,7 +244,8 @@ double safeStaticFraction(const State& state, int rod, std::span<const Vec3> dx,
   if (sameRod) {
     for (int i = 0; i + 1 < n; ++i)
       for (int j = i + 2; j + 1 < n; ++j)
-        limit(i, r.x[j], r.x[j + 1], dx[j], dx[j + 1], moves[i] + moves[j], segmentRadius(r, i) + segmentRadius(r, j));
+        limit(i, r.x[j], r.x[j + 1], dx[j], dx[j + 1], moves[i] + moves[j],
+              radiusScale * (segmentRadius(r, i) + segmentRadius(r, j)));
     return fraction;
   }
   const Vec3 still = Vec3::Zero();
@@ -247,7 +256,7 @@ double safeStaticFraction(const State& state, int rod, std::span<const Vec3> dx,
       for (int j = 0; j + 1 < o.activeNodes; ++j) {
         const double ra = segmentRadius(r, i), rb = segmentRadius(o, j);
         if (shareAnEnd(r.x[i], r.x[i + 1], o.x[j], o.x[j + 1], 1e-3 * std::min(ra, rb))) continue;
-        limit(i, o.x[j], o.x[j + 1], still, still, moves[i], ra + rb);
+        limit(i, o.x[j], o.x[j + 1], still, still, moves[i], radiusScale * (ra + rb));
       }
   }
   return fraction;

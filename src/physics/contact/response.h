@@ -76,6 +76,9 @@ struct ContactLaw {
   double frictionStatic = 0, frictionDynamic = 0;
   double frictionStiffnessRatio = 0.5;  // k_t / k
   double implicitScale = 1;    // 2 when the other side moves too (see above)
+  // Pairs: the contact distance over r1 + r2. A wound coil's outer radius
+  // is larger than the radius of the solid wire that has its stiffness.
+  double radiusScale = 1;
 };
 
 struct NormalEval {

@@ -17,10 +17,13 @@ constexpr ParamSpec kParams[] = {
     {"friction_dynamic", "1", "dynamic Coulomb coefficient coil-coil", 0.1, 0.0, 5.0, 1.0},
     {"friction_stiffness_ratio", "1", "stick spring stiffness over normal stiffness (regularised Coulomb)", 0.5, 0.01,
      10.0, 1.0},
+    {"contact_radius_scale", "1",
+     "contact distance over twice the wire radius (a wound coil's outer radius over its stiffness-equivalent one)", 1.0,
+     0.0, 5.0, 1.0},
 };
 
 ContactLaw lawOf(std::span<const double> p) {
-  return {p[0], p[1], p[3], p[4], p[5], 2.0};
+  return {p[0], p[1], p[3], p[4], p[5], 2.0, p[6]};
 }
 
 class SelfContact final : public Effect {
@@ -36,14 +39,14 @@ class SelfContact final : public Effect {
   // pair was beyond the margin and not closing, is outside the step's
   // implicit solve: the step is retaken in substeps (as for rod_contact).
   std::string endStep(const Model& model, std::span<const double> p, const State& state) const override {
-    return checkRodContacts(model, state, true, p[2]);
+    return checkRodContacts(model, state, true, p[2], p[6]);
   }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
     applyContacts(c.state.contact.self, c.state, lawOf(p), c.model.timeStep, out, true);
   }
-  double limitStaticUpdate(const Model&, std::span<const double>, const State& state, int rod,
+  double limitStaticUpdate(const Model&, std::span<const double> p, const State& state, int rod,
                            std::span<const Vec3> dx) const override {
-    return safeStaticFraction(state, rod, dx, true);
+    return safeStaticFraction(state, rod, dx, true, p[6]);
   }
 };
 
