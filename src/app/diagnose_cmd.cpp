@@ -120,14 +120,14 @@ int runDiagnose(const std::vector<std::string>& argsIn) {
   std::ostringstream md;
   md << "# Diagnosis of " << m.name << "\n\nFile `" << a.file << "`, " << sim.beams() << " beams.\n\n"
      << "## Baseline (the paper's model, fitted: ";
-  for (const FittedValue& v : d.baseline.fitted) md << v.name << " = " << fmt("%.5g", v.value / v.toSI) << " +- " << fmt("%.2g", v.sigma / v.toSI) << " " << v.unit << "; ";
+  for (const FittedValue& v : d.baseline.fitted) md << v.name << " = " << fmt("%.5g", v.value / v.toSI) << unitSuffix(v.unit) << " " << plusMinus(v.sigma / v.toSI, v.unit) << "; ";
   md << ")\n\n" << stageTable(m, d.baselineStages, {}) << "\n";
   md << "## Candidates, best first\n\n| effect | explained | significant | fitted | stage error after | note |\n|---|---|---|---|---|---|\n";
   for (const CandidateResult& c : d.candidates) {
     md << "| " << c.effect << " | " << fmt("%.1f %%", 100 * c.explainedFraction) << (c.refitted ? "" : " (screened)") << " | "
        << (c.significant ? "yes" : "no") << " | ";
     for (const FittedValue& v : c.fit.fitted)
-      if (v.name != "young_modulus") md << v.name << " = " << fmt("%.4g", v.value / v.toSI) << " +- " << fmt("%.2g", v.sigma / v.toSI) << " " << v.unit << " ";
+      if (v.name != "young_modulus") md << v.name << " = " << fmt("%.4g", v.value / v.toSI) << unitSuffix(v.unit) << " " << plusMinus(v.sigma / v.toSI, v.unit) << " ";
     md << "|";
     for (double e : c.stageErrorAfter) md << " " << fmt("%.4f", e);
     md << " | " << c.note << " |\n";

@@ -162,7 +162,10 @@ ordered_json stagesJson(const Comparison& cmp, const std::vector<StageComparison
 ordered_json fittedJson(const std::vector<FittedValue>& fitted) {
   ordered_json j = ordered_json::object();
   for (const FittedValue& v : fitted)
-    j[v.name] = {{"value", r6(v.value / v.toSI)}, {"sigma", r6(v.sigma / v.toSI)}, {"unit", v.unit}};
+    j[v.name] = {{"value", r6(v.value / v.toSI)},
+                 {"sigma", v.identifiable ? ordered_json(r6(v.sigma / v.toSI)) : ordered_json(nullptr)},
+                 {"unit", v.unit},
+                 {"identifiable", v.identifiable}};
   return j;
 }
 
@@ -333,8 +336,8 @@ int runValidate(const std::vector<std::string>& args) {
   if (!r.fitted.empty()) {
     md << "| fitted | value | sigma (1 SD) |\n|---|---|---|\n";
     for (const FittedValue& v : r.fitted)
-      md << "| " << v.name << " | " << fmt("%.5g", v.value / v.toSI) << " " << v.unit << " | " << fmt("%.2g", v.sigma / v.toSI)
-         << " " << v.unit << " |\n";
+      md << "| " << v.name << " | " << fmt("%.5g", v.value / v.toSI) << unitSuffix(v.unit) << " | "
+         << plusMinus(v.sigma / v.toSI, v.unit) << " |\n";
     md << "\nRMS residual per coordinate (mm) along the optimiser's evaluations:";
     for (double h : r.history) md << " " << fmt("%.4f", h * 1e3);
     md << "\n\n";
@@ -352,7 +355,8 @@ int runValidate(const std::vector<std::string>& args) {
   // The summary on stdout: the per-stage table before and after.
   std::printf("%s", stageTable(m, before, after).c_str());
   for (const FittedValue& v : r.fitted)
-    std::printf("%s = %.5g +- %.2g %s\n", v.name.c_str(), v.value / v.toSI, v.sigma / v.toSI, v.unit.c_str());
+    std::printf("%s = %.5g%s %s\n", v.name.c_str(), v.value / v.toSI, unitSuffix(v.unit).c_str(),
+                plusMinus(v.sigma / v.toSI, v.unit).c_str());
   std::printf("report: %s\n", (std::filesystem::path(a.out) / "report.json").string().c_str());
   for (const StageComparison& s : after)
     if (!s.ok) {

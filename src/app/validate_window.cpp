@@ -178,7 +178,7 @@ int runValidateWindow(const WorkbenchArgs& a, const WindowArgs& w) {
       v.ok = r.ok;
       v.message = r.message;
       for (const FittedValue& f : r.fitted)
-        v.fitted.push_back(f.name + " = " + fmt("%.5g", f.value / f.toSI) + " +- " + fmt("%.2g", f.sigma / f.toSI) + " " + f.unit);
+        v.fitted.push_back(f.name + " = " + fmt("%.5g", f.value / f.toSI) + unitSuffix(f.unit) + " " + plusMinus(f.sigma / f.toSI, f.unit));
       for (double x : r.history) v.history.push_back(float(x * 1e3));
       return v;
     } catch (const std::exception& e) {

@@ -2,10 +2,12 @@
 
 #include <nlopt.hpp>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace coilsim::validation {
 namespace {
@@ -145,6 +147,7 @@ FitResult identify(StageSimulator& sim, const Comparison& cmp, const ModelParams
   res.rss = res.residual.squaredNorm();
   res.chi2 = res.residual.cwiseQuotient(cmp.sigmas(sims)).squaredNorm();
   const double m = double(res.residual.size());
+  std::set<size_t> unseen;  // parameters the data do not see
   if (n > 0) {
     res.jacobian = residualJacobian(sim, cmp, res.params, P.fit);
     const double s2 = res.rss / std::max(1.0, m - double(n));
@@ -155,8 +158,17 @@ FitResult identify(StageSimulator& sim, const Comparison& cmp, const ModelParams
       for (size_t k = 0; k < n; ++k)
         scale[Eigen::Index(k)] = std::max(std::abs(getParam(res.params, P.fit[k].name)), 1e-6 * (P.fit[k].hi - P.fit[k].lo));
       const Eigen::MatrixXd Js = res.jacobian * scale.asDiagonal();
-      const Eigen::MatrixXd inv = (Js.transpose() * Js).completeOrthogonalDecomposition().pseudoInverse();
+      const Eigen::MatrixXd JtJ = Js.transpose() * Js;
+      const Eigen::MatrixXd inv = JtJ.completeOrthogonalDecomposition().pseudoInverse();
       res.covariance = s2 * scale.asDiagonal() * inv * scale.asDiagonal();
+      // The pseudo-inverse gives a null direction zero variance, as if the
+      // data pinned it exactly: they do not see it at all.
+      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(JtJ);
+      const double largest = std::max(eig.eigenvalues().maxCoeff(), 0.0);
+      for (Eigen::Index i = 0; i < eig.eigenvalues().size(); ++i)
+        if (!(eig.eigenvalues()[i] > 1e-12 * largest) || largest == 0)
+          for (Eigen::Index k = 0; k < Eigen::Index(n); ++k)
+            if (std::abs(eig.eigenvectors()(k, i)) > 1e-6) unseen.insert(size_t(k));
     }
   }
   for (size_t k = 0; k < n; ++k) {
@@ -166,6 +178,7 @@ FitResult identify(StageSimulator& sim, const Comparison& cmp, const ModelParams
     v.toSI = P.fit[k].toSI;
     v.value = getParam(res.params, v.name);
     v.sigma = res.covariance.size() ? std::sqrt(std::max(0.0, res.covariance(Eigen::Index(k), Eigen::Index(k)))) : NAN;
+    if (unseen.count(k)) v.identifiable = false, v.sigma = INFINITY;
     res.fitted.push_back(v);
   }
   res.ok = true;

@@ -18,7 +18,8 @@
 // improves chi^2 by less than 0.01, since a parameter change that moves
 // chi^2 by 1 is a one-sigma change, so further digits are below the noise.
 // Uncertainties: cov = s^2 (J^T J)^-1 with J the central-difference
-// Jacobian of the residuals at the optimum and s^2 = RSS / (m - p).
+// Jacobian of the residuals at the optimum and s^2 = RSS / (m - p); a
+// parameter in a null direction of J^T J is reported as not identifiable.
 #include <functional>
 #include <string>
 #include <vector>
@@ -43,6 +44,10 @@ struct FittedValue {
   std::string name, unit;
   double value = 0, sigma = 0;  // SI
   double toSI = 1;              // edge = SI / toSI
+  // False when the data do not move with this parameter (its column of the
+  // Jacobian, or a combination with others, is zero: an effect that never
+  // acts in these stages); sigma is then infinite, not the pseudo-inverse's 0.
+  bool identifiable = true;
 };
 
 struct FitResult {

@@ -172,6 +172,7 @@ void checkHidden(const Measurement& sk, const Hidden& h, bool refit = true) {
     for (const FittedValue& f : c->fit.fitted)
       if (f.name == name) {
         found = true;
+        EXPECT_TRUE(f.identifiable) << name;
         EXPECT_LE(std::abs(f.value - value), kSigmas * f.sigma)
             << name << " fitted " << f.value / f.toSI << " +- " << f.sigma / f.toSI << ", truth " << value / f.toSI;
       }

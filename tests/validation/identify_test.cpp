@@ -1,5 +1,6 @@
 // identify's stop request (the panel's Stop button): the fit ends at the
-// evaluation that asks, says "stopped" and reports no values.
+// evaluation that asks, says "stopped" and reports no values; and its
+// uncertainties for a parameter the data cannot see.
 #include <gtest/gtest.h>
 
 #include "validation/generate.h"
@@ -50,6 +51,32 @@ TEST(Identify, StopRequestEndsTheFitAtOnce) {
   ASSERT_TRUE(full.ok) << full.message;
   EXPECT_GT(full.evaluations, 3);
   EXPECT_NEAR(full.fitted[0].value, 5e9, 0.05 * 5e9);
+}
+
+// Drag acts only while the coil moves: a static stage does not see the
+// viscosity at all (its Jacobian column is zero). Its uncertainty is then
+// infinite, not the pseudo-inverse's zero, while E keeps a finite one.
+TEST(Identify, AParameterTheDataDoNotSeeIsNotIdentifiable) {
+  const Measurement sk = straightCantilever();
+  ModelParams truth = ModelParams::nominal(sk);
+  truth.youngModulus = 5e9;
+  GenerateOptions g;
+  g.sigma = 0.02e-3;
+  const Measurement m = generateMeasurement(sk, truth, g);
+  StageSimulator sim(m, {2e-3, 2e-3, 1e-3});
+  Comparison cmp(m);
+  ModelParams start = ModelParams::nominal(m);
+  start.effects.push_back(effectFromFile("drag", m));
+  FitOptions o;
+  o.params = {"young_modulus", "drag.viscosity_pa_s"};
+  const FitResult r = identify(sim, cmp, start, o);
+  ASSERT_TRUE(r.ok) << r.message;
+  ASSERT_EQ(r.fitted.size(), 2u);
+  EXPECT_TRUE(r.fitted[0].identifiable);
+  EXPECT_GT(r.fitted[0].sigma, 0);
+  EXPECT_LT(r.fitted[0].sigma, 0.05 * 5e9);
+  EXPECT_FALSE(r.fitted[1].identifiable);
+  EXPECT_EQ(r.fitted[1].sigma, INFINITY);
 }
 
 }  // namespace
