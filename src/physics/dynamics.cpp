@@ -181,8 +181,10 @@ constexpr double kWallPenetrationWarning = 0.1;
 void recordWallPenetration(const Model& model, State& state) {
   StepStats& s = state.stats;
   for (size_t k = 0; k < state.rods.size(); ++k) {
-    const RodState& r = state.rods[k];
-    const double depth = r.contact.wallPenetration;
+    RodState& r = state.rods[k];
+    // Every detection of the step, the substeps' too.
+    const double depth = r.contact.wallPenetrationPeak;
+    r.contact.wallPenetrationPeak = 0;
     if (!(depth > 0) || r.activeNodes < 1) continue;
     double radius = INFINITY;
     for (int i = 0; i < r.activeNodes; ++i) radius = std::min(radius, r.nodes[i].radius);

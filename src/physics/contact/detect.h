@@ -35,6 +35,11 @@ inline constexpr double kWallSkin = 0.05;
 // otherwise go through the next face within the step (the plane of a face
 // 0.6 mm away is 50 um off a 7 mm sphere). Faces that form a ridge into the
 // free space do not, since their planes would cut it. At most 3 per segment.
+// And each node of a segment in contact is bounded by the plane of its own
+// nearest feature (a contact pressing that node only, ContactPoint::node)
+// unless the segment's planes agree with it near the node: a plane tangent
+// at the segment's nearest point can be 36 um off a 7 mm sac at the far
+// node, and a free end node has no other segment.
 // Catheter rods are rigid and skip wall contact.
 void detectWallContacts(const Model& model, State& state, double margin, const ContactLaw& law);
 
@@ -67,11 +72,14 @@ std::string checkRodContacts(const Model& model, const State& state, bool sameRo
 // into a wall beyond what the step's contact planes allowed, or empty. A
 // plane is the wall's tangent at detection; a node sliding fast along a
 // curved wall leaves it (1 mm along a 7 mm sphere is 0.14 mm deep, and a
-// frictionless coil tip skating at 1 m/s does that within one step). Only
-// segments that moved farther than the nearest wall outside the step's
-// solve (at most `margin`) are queried: a node at rest against a wall,
-// listed but not closing, that a jolt moves in within the step (up to the
-// margin deep) is caught too.
+// frictionless coil tip skating at 1 m/s does that within one step). A
+// plane bounds only the nodes it pressed from the step's start; a node that
+// one of the step's Newton iterates carried in (ContactPoint::pressed) is
+// judged by where the iterations left it. Only segments with a node that
+// moved farther than its nearest wall outside the step's solve (at most
+// `margin`) are queried: a node at rest against a wall, listed but not
+// closing, that a jolt moves in within the step (up to the margin deep) is
+// caught too.
 std::string checkWallContacts(const Model& model, const State& state, double margin);
 
 }  // namespace coilsim
