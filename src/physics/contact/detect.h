@@ -41,7 +41,23 @@ inline constexpr double kWallSkin = 0.05;
 // at the segment's nearest point can be 36 um off a 7 mm sac at the far
 // node, and a free end node has no other segment.
 // Catheter rods are rigid and skip wall contact.
-void detectWallContacts(const Model& model, State& state, double margin, const ContactLaw& law);
+// `law.stiffness` is per length; each rod presses with wallStiffness(law.stiffness, rigidityScale, rod).
+void detectWallContacts(const Model& model, State& state, double margin, const ContactLaw& law,
+                        double rigidityScale);
+
+// The wall's penalty stiffness per length for `rod`: `stiffness` (N/m per
+// m), or `rigidityScale` (1/m^3) times the wire's bending rigidity over its
+// radius, EI / r, when that is more. What a wire presses on a wall scales
+// with EI in a given geometry (its elastic forces do; so does the load at
+// which a wire pushed end-on buckles, pi^2 EI / (4 l^2)), and the
+// penetration, load / stiffness, must stay a fraction of r: so the
+// stiffness scales with EI / r. The paper's 0.356 mm wire (EI 94 N mm^2,
+// EI / r 265 N mm), pushed end-on into a sac, went 177 um (50 % of r) into
+// a 200 N/mm^2 wall, where the cavity test's 0.15 mm wire (EI / r 19.9 N mm)
+// stays within 3 % of r. Below `stiffness` (the scenes' soft coils, EI / r
+// 0.019 N mm) the loads that matter are jolts (a node inserted at the
+// catheter tip shakes the coil), not the wire's elasticity.
+double wallStiffness(double stiffness, double rigidityScale, const RodModel& rod);
 
 // Capsule pairs through a uniform grid over all segments (O(n) for a coil,
 // not O(n^2)). sameRod: non-adjacent segments of one rod (self-contact);

@@ -21,6 +21,9 @@ struct Nearest {
 thread_local std::vector<SegmentTriangle> hits;
 // The same for one node of that segment (nearestToNode).
 thread_local std::vector<SegmentTriangle> nodeHits;
+// Squared distance from the segment's box to each candidate's box: a lower
+// bound of the distance to it from any point of the segment.
+thread_local std::vector<double> boxGap2;
 
 // A node's own nearest wall gets a plane of its own unless one of the
 // segment's planes agrees with it within this fraction of the wire radius
@@ -48,6 +51,7 @@ Nearest nearestFeature(const ObstacleTree& tree, const Vec3& a, const Vec3& b, d
   candidates.clear();
   tree.overlapping(lo - grow, hi + grow, stack, candidates);
   hits.resize(candidates.size());
+  boxGap2.resize(candidates.size());
   Nearest best;
   const TriangleMesh& m = tree.mesh();
   for (size_t k = 0; k < candidates.size(); ++k) {
@@ -56,7 +60,8 @@ Nearest nearestFeature(const ObstacleTree& tree, const Vec3& a, const Vec3& b, d
     // (With a little slack: a triangle sharing the nearest feature must
     // not be lost to round-off, pseudoNormal needs it.)
     const double bound = best.hit.distance + 1e-9 * reach;
-    if (best.triangle >= 0 && boxDistance2(lo, hi, p.cwiseMin(q).cwiseMin(r), p.cwiseMax(q).cwiseMax(r)) > bound * bound) {
+    boxGap2[k] = boxDistance2(lo, hi, p.cwiseMin(q).cwiseMin(r), p.cwiseMax(q).cwiseMax(r));
+    if (best.triangle >= 0 && boxGap2[k] > bound * bound) {
       hits[k].distance = std::numeric_limits<double>::quiet_NaN();
       continue;
     }
@@ -114,15 +119,12 @@ Nearest nearestToNode(const ObstacleTree& tree, const Vec3& x, double s, const N
   Nearest best{measure(segment.candidate), segment.triangle, segment.candidate};
   for (size_t k = 0; k < candidates.size(); ++k) {
     if (k == segment.candidate) continue;
-    const Eigen::Vector3i& f = m.triangles[candidates[k]];
-    const Vec3 &p = m.vertices[f[0]], &q = m.vertices[f[1]], &r = m.vertices[f[2]];
-    const double lower = std::isnan(hits[k].distance)
-                             ? std::sqrt(boxDistance2(x, x, p.cwiseMin(q).cwiseMin(r), p.cwiseMax(q).cwiseMax(r)))
-                             : hits[k].distance;
     // (Not a triangle that shares the nearest feature: its distance may
     // differ from the segment's in the last bit, and the side would then
     // be decided without it, the wrong way at a sharp edge.)
-    if (lower > best.hit.distance + 1e-9 * reach) {
+    // Nor one farther than the reach: the caller wants the node's wall only within it.
+    const double bound = std::min(best.hit.distance, reach) + 1e-9 * reach;
+    if (std::isnan(hits[k].distance) ? boxGap2[k] > bound * bound : hits[k].distance > bound) {
       nodeHits[k].distance = std::numeric_limits<double>::quiet_NaN();
       continue;
     }
@@ -157,11 +159,21 @@ ContactPoint makeContact(const ObstacleTree& tree, const Nearest& n, const std::
 
 }  // namespace
 
-void detectWallContacts(const Model& model, State& state, double margin, const ContactLaw& law) {
+double wallStiffness(double stiffness, double rigidityScale, const RodModel& rod) {
+  const double r = rod.section.radius;
+  if (!(rigidityScale > 0) || !(r > 0)) return stiffness;
+  const double rigidity = rod.material.youngModulus * std::min(rod.section.iy, rod.section.iz);
+  return std::max(stiffness, rigidityScale * rigidity / r);
+}
+
+void detectWallContacts(const Model& model, State& state, double margin, const ContactLaw& wallLaw,
+                        double rigidityScale) {
   static thread_local std::vector<int> stack, candidates;
   const double h = model.timeStep;
   for (size_t k = 0; k < state.rods.size(); ++k) {
     RodState& r = state.rods[k];
+    ContactLaw law = wallLaw;
+    law.stiffness = wallStiffness(wallLaw.stiffness, rigidityScale, model.rods[k]);
     RodContacts& rc = r.contact;
     std::swap(rc.wall, rc.previous);
     rc.wall.clear();
