@@ -171,11 +171,10 @@ StepReport retryInSubsteps(const Model& model, State& state, const Snapshot& sta
   return report;
 }
 
-// Wall penetration is meant to stay within 10 % of the wire radius. A thick,
-// stiff coil pressed hard goes deeper (the penalty, wall_contact
-// stiffness_n_mm2, is per length and not scaled with the wire), and so do
-// some fast steps of the soft coil (kTransientWallPenetration in
-// tests/support/known_bugs.h). Said once per run, when first seen.
+// Wall penetration is meant to stay within 10 % of the wire radius. A wall
+// set softer than the wire needs (wall_contact's stiffness_n_mm2 with
+// stiffness_per_rigidity_1_mm3 at 0) or a coil pressed harder than its
+// EI / r says goes deeper. Said once per run, when first seen.
 constexpr double kWallPenetrationWarning = 0.1;
 
 void recordWallPenetration(const Model& model, State& state) {

@@ -201,7 +201,7 @@ TEST_P(ContactScene, ShortenedDeploymentKeepsTheCoilInTheSac) {
   EXPECT_EQ(c.beyondNeck > 0, c.minAboveNeck < 0) << c.beyondNeck << " mm beyond the neck plane (planning)";
   // And during the deployment, as the run's own contact detection saw it.
   const double during = result["stats"]["max_wall_penetration_of_radius"].get<double>();
-  std::printf("[ measured ] %s: deepest wall penetration during the run %.1f um (%.0f %% of r)\n", sc.scene,
+  std::printf("[ measured ] %s: deepest wall penetration during the run %.1f um (%.1f %% of r)\n", sc.scene,
               result["stats"]["max_wall_penetration_um"].get<double>(), 100 * during);
   if (!coilsim::test::kTransientWallPenetration.open) {
     EXPECT_LT(during, 0.1);
