@@ -11,7 +11,8 @@ namespace coilsim {
 
 // Reports contact_step_us_n300, contact_detect_us_n300,
 // contact_free_step_us_n300, contact_over_free_n300, contact_mesh_triangles
-// and contact_max_penetration_um through `set`; prints a short table on
+// contact_max_penetration_um and contact_max_penetration_of_radius (the
+// run's own record of the deepest wall penetration) through `set`; prints a short table on
 // stdout unless `json`. `quick` pushes 10 mm instead of 60 mm.
 void benchContactFigures(const std::function<void(const std::string&, double)>& set, bool quick, bool json);
 

@@ -23,6 +23,9 @@
 #include "planning/case_file.h"
 #include "planning/metrics.h"
 #include "planning/sac_geometry.h"
+#include "io/scene.h"
+#include "physics/controller.h"
+#include "physics/integrator.h"
 #include "support/known_bugs.h"
 
 namespace {
@@ -198,7 +201,7 @@ TEST_P(ContactScene, ShortenedDeploymentKeepsTheCoilInTheSac) {
   EXPECT_EQ(c.beyondNeck > 0, c.minAboveNeck < 0) << c.beyondNeck << " mm beyond the neck plane (planning)";
   // And during the deployment, as the run's own contact detection saw it.
   const double during = result["stats"]["max_wall_penetration_of_radius"].get<double>();
-  std::printf("[ measured ] %s: deepest wall penetration during the run %.1f um (%.0f %% of r)\n", sc.scene,
+  std::printf("[ measured ] %s: deepest wall penetration during the run %.1f um (%.1f %% of r)\n", sc.scene,
               result["stats"]["max_wall_penetration_um"].get<double>(), 100 * during);
   if (!coilsim::test::kTransientWallPenetration.open) {
     EXPECT_LT(during, 0.1);
@@ -208,6 +211,45 @@ TEST_P(ContactScene, ShortenedDeploymentKeepsTheCoilInTheSac) {
               "plane (a loop may sag %.3f mm over the neck), %.3f mm of coil beyond it\n",
               sc.scene, c.nodes, c.minDepth, r, std::max(0.0, r - c.minDepth),
               c.maxFromCentre, info.sacRadii.x(), c.minAboveNeck, sag, c.beyondNeck);
+}
+
+// The same deployment in this process, measured at the end of every step
+// against the phantom's STL itself (the test's own signed distance, not
+// the contact code): at no step may the wire of any node or segment
+// midpoint be more than 10 % of its radius inside the wall (issue 6; the
+// soft coil's tip sat 17 um = 11 % in for several steps, recorded as
+// kTransientWallPenetration). And the coil must come within 10 % of r of
+// the wall's surface at some step, or the bound would prove nothing.
+TEST_P(ContactScene, NoStepOfTheDeploymentPutsTheWireIntoTheWall) {
+  SKIP_IF_OPEN(coilsim::test::kTransientWallPenetration);
+  const SceneCase sc = GetParam();
+  const fs::path scene = fs::path(kSource) / "scenes" / sc.scene;
+  const coilsim::io::SceneSpec spec = io::loadScene(scene.string());
+  coilsim::io::CompiledScene compiled = io::compileSceneWithDeployment(spec);
+  const coilsim::Model model = coilsim::compileModel(compiled.model);
+  coilsim::State state = coilsim::makeState(model);
+  const coilsim::Deployment& dep = *compiled.deployment;
+  coilsim::DeploymentState ds = coilsim::initDeployment(dep, model, state, compiled.initialDeployed, compiled.initialTwist);
+  coilsim::DeploymentController controller;
+  ASSERT_EQ(controller.command(dep, ds, {coilsim::DeviceCommand::Kind::Push, 0.01, 0.03}), "");
+  const geometry::MeshQuery stl(io::inspectMeshFile((kCatalogue / sc.mesh).string()).mesh);  // mm
+  const double r = 1e3 * dep.section.radius;  // mm
+  double deepest = -1e9, deepestAt = 0;  // wire penetration, mm (< 0: clear)
+  const int steps = int(std::lround(3.3 / model.timeStep));
+  for (int i = 0; i < steps; ++i) {
+    controller.advance(dep, model, state, ds, model.timeStep);
+    ASSERT_TRUE(coilsim::step(model, state).ok()) << "step " << i << ": " << state.warnings.back();
+    const coilsim::RodState& rod = state.rods[dep.chainRod];
+    for (int k = 1; k < rod.activeNodes; ++k)
+      for (const Vec3& x : {Vec3(rod.x[k]), Vec3(0.5 * (rod.x[k] + rod.x[k - 1]))}) {
+        const double depth = r + stl.signedDistance(1e3 * x);
+        if (depth > deepest) deepest = depth, deepestAt = state.time;
+      }
+  }
+  std::printf("[ measured ] %s: deepest wire penetration at the end of any step %.2f um (%.1f %% of r) at t = %.3f s "
+              "(STL signed distance)\n", sc.scene, 1e3 * deepest, 100 * deepest / r, deepestAt);
+  EXPECT_LT(deepest, 0.1 * r);
+  EXPECT_GT(deepest, -0.1 * r) << "the coil never came near the wall: the bound proves nothing";
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ContactScene,

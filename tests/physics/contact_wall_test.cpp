@@ -120,6 +120,7 @@ Resting restingRod(double stiffness_n_mm2, int beams, bool contact) {
   def.damping.massCoeff = 50;
   def.effects.push_back(EffectRegistry::global().use("wall_contact"));
   def.effects.back().set("stiffness_n_mm2", stiffness_n_mm2 * 1e6);
+  def.effects.back().set("stiffness_per_rigidity_1_mm3", 0);  // the penalty law exactly as given
   def.effects.back().enabled = contact;
   def.obstacles.push_back(obstacleOf(test::plane(Vec3::Zero(), -Vec3::UnitZ(), 0.02, 8)));
   Resting r{compileModel(def), {}};
@@ -161,7 +162,7 @@ struct Cavity {
   TriangleMesh mesh;
 };
 
-std::unique_ptr<Cavity> cavityDeployment(double coilLength, int beams, bool wall, bool self) {
+std::unique_ptr<Cavity> cavityDeployment(double coilLength, int beams, bool wall, bool self, double wire = 0.15e-3) {
   auto c = std::make_unique<Cavity>();
   c->mesh = icosphere(3.5e-3, 4);  // 5120 triangles, inscribed radius 3.497 mm
   ModelDef def;
@@ -179,7 +180,7 @@ std::unique_ptr<Cavity> cavityDeployment(double coilLength, int beams, bool wall
   d.coilBeams = beams;
   d.coilRest = makeHelix(coilLength, beams, 6e-3, 0.4e-3, true);
   d.coilMaterial = test::platinum();
-  d.coilSection = circularSection(0.15e-3, test::kPlatinumPoisson);
+  d.coilSection = circularSection(wire, test::kPlatinumPoisson);
   d.tip.position = Vec3(0, 0, -2.5e-3);
   d.tip.direction = Vec3(0, 0, 1);
   d.tip.normal = Vec3(1, 0, 0);
@@ -278,6 +279,37 @@ TEST(WallContactTest, WithoutFrictionTheCoilStillDeploysInsideTheCavity) {
               "%ld of %d steps retaken in substeps\n", p.deepest * 1e6, 100 * p.deepest / radius, p.fastest,
               c->state.substepped, p.steps);
   EXPECT_LT(p.deepest, 0.2 * radius);
+}
+
+// The paper's thicker wire (0.356 mm, E 7.5 GPa: EI 32 times the wire
+// above) in the same cavity, the same push. What it presses on the wall
+// grows with its rigidity; at the 200 N/mm^2 that suits the thinner wire it
+// went deeper than 10 % of its radius. The default wall scales with EI / r
+// (stiffness_per_rigidity_1_mm3, detect.h wallStiffness); the control, with
+// the scaling off, must fail the bound, or the test would prove nothing.
+// Reference: the cavity's face planes, as above.
+TEST(WallContactTest, AThickStiffWireIsHeldByTheDefaultWall) {
+  const double length = 0.04, radius = 0.3556e-3;
+  for (const bool scaled : {true, false}) {
+    auto c = cavityDeployment(length, 80, true, true, radius);
+    if (!scaled)
+      for (EffectUse& u : c->model.effects)
+        if (u.name() == "wall_contact") u.set("stiffness_per_rigidity_1_mm3", 0);
+    const CavityPush p = pushIntoCavity(*c, length);
+    std::printf("[ measured ] 0.356 mm wire, wall %s: deepest penetration %.2f um (%.1f %% of r), max node wall force "
+                "%.3f N, fastest node %.3f m/s, %ld steps retaken in substeps%s\n",
+                scaled ? "scaled with EI / r (default)" : "at stiffness_n_mm2 alone", p.deepest * 1e6,
+                100 * p.deepest / radius, p.maxForce, p.fastest, c->state.substepped,
+                p.refused.empty() ? "" : (", refused: " + p.refused).c_str());
+    if (scaled) {
+      ASSERT_EQ(p.refused, "");
+      EXPECT_DOUBLE_EQ(c->ds.deployed, length);
+      EXPECT_LT(p.deepest, 0.1 * radius);
+      EXPECT_GT(p.maxForce, 0) << "the coil never touched the wall: the test would prove nothing";
+    } else {
+      EXPECT_GT(p.deepest, 0.1 * radius) << "the control does not fail: the bound proves nothing";
+    }
+  }
 }
 
 TEST(WallContactTest, SwitchedOffTheCoilLeavesTheCavity) {

@@ -17,6 +17,7 @@ struct ContactPoint {
   int other = 0;              // obstacle index (wall) or rod index (self, rod)
   int otherSegment = -1;      // segment of the other rod (-1 for walls)
   bool line = false;          // wall: line contact along the segment; else a point at s
+  int node = -1;              // line contacts: -1 presses both nodes; 0 or 1 only node a or b (that node's own wall)
   double s = 0;               // point on the segment, in [0, 1] (line: force centroid)
   double otherS = 0;          // pair contacts: the point on the other segment, in [0, 1]
   Vec3 normal = Vec3::UnitZ();  // unit, the direction this rod is pushed
@@ -31,6 +32,13 @@ struct ContactPoint {
   // solve even though it does not touch yet (speculative contact; see
   // response.h).
   bool closing[2] = {false, false};
+  // Line contacts: whether one of this step's Newton iterates has carried
+  // node a, b into the plane although it was neither pressed nor closing at
+  // the start. The node then stays in the solve for the step's remaining
+  // iterates, like a closing one (response.cpp, applyContacts); the wall's
+  // end-of-step check still counts it as outside the step's linearisation.
+  // Mutable: set through the const contact lists the effects read.
+  mutable bool pressed[2] = {false, false};
   // Friction memory: elastic tangential displacement of the regularised
   // Coulomb spring (the stick point is contact point - slip) and whether the
   // contact slides (dynamic coefficient) or sticks (static).
@@ -46,6 +54,10 @@ struct RodContacts {
   std::vector<double> selfForce;  // (nnode) normal force from self-contact per node, N
   std::vector<double> rodForce;   // (nnode) normal force from other rods per node, N
   double wallPenetration = 0;     // deepest wall penetration of the wire (not its skin) at the last detection, m (>= 0)
+  // The deepest wallPenetration of the detections since the step's record
+  // took it (dynamics.cpp): a step retaken in substeps detects again in
+  // each, and its first detection (the state the last step left) counts too.
+  double wallPenetrationPeak = 0;
   // Temporal coherence of the wall search: per segment, a distance within
   // which no wall triangle lay at its last full query (0: none known), and
   // its two end points then. Valid while the rod keeps `wallClearNodes`

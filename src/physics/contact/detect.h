@@ -35,8 +35,29 @@ inline constexpr double kWallSkin = 0.05;
 // otherwise go through the next face within the step (the plane of a face
 // 0.6 mm away is 50 um off a 7 mm sphere). Faces that form a ridge into the
 // free space do not, since their planes would cut it. At most 3 per segment.
+// And each node of a segment in contact is bounded by the plane of its own
+// nearest feature (a contact pressing that node only, ContactPoint::node)
+// unless the segment's planes agree with it near the node: a plane tangent
+// at the segment's nearest point can be 36 um off a 7 mm sac at the far
+// node, and a free end node has no other segment.
 // Catheter rods are rigid and skip wall contact.
-void detectWallContacts(const Model& model, State& state, double margin, const ContactLaw& law);
+// `law.stiffness` is per length; each rod presses with wallStiffness(law.stiffness, rigidityScale, rod).
+void detectWallContacts(const Model& model, State& state, double margin, const ContactLaw& law,
+                        double rigidityScale);
+
+// The wall's penalty stiffness per length for `rod`: `stiffness` (N/m per
+// m), or `rigidityScale` (1/m^3) times the wire's bending rigidity over its
+// radius, EI / r, when that is more. What a wire presses on a wall scales
+// with EI in a given geometry (its elastic forces do; so does the load at
+// which a wire pushed end-on buckles, pi^2 EI / (4 l^2)), and the
+// penetration, load / stiffness, must stay a fraction of r: so the
+// stiffness scales with EI / r. The paper's 0.356 mm wire (EI 94 N mm^2,
+// EI / r 265 N mm), pushed end-on into a sac, went 177 um (50 % of r) into
+// a 200 N/mm^2 wall, where the cavity test's 0.15 mm wire (EI / r 19.9 N mm)
+// stays within 3 % of r. Below `stiffness` (the scenes' soft coils, EI / r
+// 0.019 N mm) the loads that matter are jolts (a node inserted at the
+// catheter tip shakes the coil), not the wire's elasticity.
+double wallStiffness(double stiffness, double rigidityScale, const RodModel& rod);
 
 // Capsule pairs through a uniform grid over all segments (O(n) for a coil,
 // not O(n^2)). sameRod: non-adjacent segments of one rod (self-contact);
@@ -79,11 +100,14 @@ double safeStaticFraction(const State& state, int rod, std::span<const Vec3> dx,
 // into a wall beyond what the step's contact planes allowed, or empty. A
 // plane is the wall's tangent at detection; a node sliding fast along a
 // curved wall leaves it (1 mm along a 7 mm sphere is 0.14 mm deep, and a
-// frictionless coil tip skating at 1 m/s does that within one step). Only
-// segments that moved farther than the nearest wall outside the step's
-// solve (at most `margin`) are queried: a node at rest against a wall,
-// listed but not closing, that a jolt moves in within the step (up to the
-// margin deep) is caught too.
+// frictionless coil tip skating at 1 m/s does that within one step). A
+// plane bounds only the nodes it pressed from the step's start; a node that
+// one of the step's Newton iterates carried in (ContactPoint::pressed) is
+// judged by where the iterations left it. Only segments with a node that
+// moved farther than its nearest wall outside the step's solve (at most
+// `margin`) are queried: a node at rest against a wall, listed but not
+// closing, that a jolt moves in within the step (up to the margin deep) is
+// caught too.
 std::string checkWallContacts(const Model& model, const State& state, double margin);
 
 }  // namespace coilsim

@@ -12,12 +12,23 @@ namespace {
 struct Nearest {
   SegmentTriangle hit;
   int triangle = -1;
+  size_t candidate = 0;  // its index in the query's candidates
 };
 
 // Closest points of the segment to each candidate triangle (kept for the
 // concave-neighbour pass), in the order of `candidates`; NaN distance when a
 // triangle was skipped because its box is farther than the best so far.
 thread_local std::vector<SegmentTriangle> hits;
+// The same for one node of that segment (nearestToNode).
+thread_local std::vector<SegmentTriangle> nodeHits;
+// Squared distance from the segment's box to each candidate's box: a lower
+// bound of the distance to it from any point of the segment.
+thread_local std::vector<double> boxGap2;
+
+// A node's own nearest wall gets a plane of its own unless one of the
+// segment's planes agrees with it within this fraction of the wire radius
+// (half the end-of-step check's tolerance, kMissedContact).
+constexpr double kNodePlane = 0.5 * kMissedContact;
 
 // How far beyond its reach each wall query looks, so that a segment found
 // clear can skip the next queries until it has moved that far (m).
@@ -40,18 +51,22 @@ Nearest nearestFeature(const ObstacleTree& tree, const Vec3& a, const Vec3& b, d
   candidates.clear();
   tree.overlapping(lo - grow, hi + grow, stack, candidates);
   hits.resize(candidates.size());
+  boxGap2.resize(candidates.size());
   Nearest best;
   const TriangleMesh& m = tree.mesh();
   for (size_t k = 0; k < candidates.size(); ++k) {
     const Eigen::Vector3i& f = m.triangles[candidates[k]];
     const Vec3 &p = m.vertices[f[0]], &q = m.vertices[f[1]], &r = m.vertices[f[2]];
-    if (best.triangle >= 0 &&
-        boxDistance2(lo, hi, p.cwiseMin(q).cwiseMin(r), p.cwiseMax(q).cwiseMax(r)) > best.hit.distance * best.hit.distance) {
+    // (With a little slack: a triangle sharing the nearest feature must
+    // not be lost to round-off, pseudoNormal needs it.)
+    const double bound = best.hit.distance + 1e-9 * reach;
+    boxGap2[k] = boxDistance2(lo, hi, p.cwiseMin(q).cwiseMin(r), p.cwiseMax(q).cwiseMax(r));
+    if (best.triangle >= 0 && boxGap2[k] > bound * bound) {
       hits[k].distance = std::numeric_limits<double>::quiet_NaN();
       continue;
     }
     hits[k] = closestSegmentTriangle(a, b, p, q, r);
-    if (best.triangle < 0 || hits[k].distance < best.hit.distance) best = {hits[k], candidates[k]};
+    if (best.triangle < 0 || hits[k].distance < best.hit.distance) best = {hits[k], candidates[k], k};
   }
   return best;
 }
@@ -63,12 +78,14 @@ Nearest nearestFeature(const ObstacleTree& tree, const Vec3& a, const Vec3& b, d
 // meets its vessel at the neck the wall is a sliver 0.2 mm thick, and
 // segments inside the sac near that rim were taken as 0.35-0.41 mm beyond
 // the wall and thrown with 35-49 N.
-Vec3 pseudoNormal(const ObstacleTree& tree, const Nearest& n, const std::vector<int>& candidates, double radius) {
+// `found` are the closest points of the query that found n.
+Vec3 pseudoNormal(const ObstacleTree& tree, const Nearest& n, const std::vector<int>& candidates,
+                  const std::vector<SegmentTriangle>& found, double radius) {
   const double tol = 1e-9 * radius;
   const TriangleMesh& m = tree.mesh();
   Vec3 sum = Vec3::Zero();
   for (size_t k = 0; k < candidates.size(); ++k) {
-    if (!(hits[k].distance <= n.hit.distance + tol) || (hits[k].onTriangle - n.hit.onTriangle).norm() > tol) continue;
+    if (!(found[k].distance <= n.hit.distance + tol) || (found[k].onTriangle - n.hit.onTriangle).norm() > tol) continue;
     const Eigen::Vector3i& f = m.triangles[candidates[k]];
     double weight = M_PI;  // an edge: both faces alike
     for (int i = 0; i < 3; ++i) {
@@ -82,11 +99,45 @@ Vec3 pseudoNormal(const ObstacleTree& tree, const Nearest& n, const std::vector<
   return sum.squaredNorm() > 0 ? Vec3(sum.normalized()) : tree.normal(n.triangle);
 }
 
+// The nearest feature of the wall to node x of the segment whose query
+// found `segment` and left `candidates` and `hits` (s: 0 for its node a, 1
+// for b), with the closest points in `nodeHits`. A triangle is no nearer
+// to the node than to the segment, so with the segment's nearest triangle
+// measured first, only those the segment found about as near are measured
+// (for a node on a wall, the few under it).
+Nearest nearestToNode(const ObstacleTree& tree, const Vec3& x, double s, const Nearest& segment,
+                      const std::vector<int>& candidates, double reach) {
+  const TriangleMesh& m = tree.mesh();
+  nodeHits.resize(candidates.size());
+  const auto measure = [&](size_t k) -> const SegmentTriangle& {
+    const Eigen::Vector3i& f = m.triangles[candidates[k]];
+    SegmentTriangle& h = nodeHits[k];
+    h.s = s, h.onSegment = x, h.onTriangle = closestPointTriangle(x, m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]);
+    h.distance = (x - h.onTriangle).norm();
+    return h;
+  };
+  Nearest best{measure(segment.candidate), segment.triangle, segment.candidate};
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    if (k == segment.candidate) continue;
+    // (Not a triangle that shares the nearest feature: its distance may
+    // differ from the segment's in the last bit, and the side would then
+    // be decided without it, the wrong way at a sharp edge.)
+    // Nor one farther than the reach: the caller wants the node's wall only within it.
+    const double bound = std::min(best.hit.distance, reach) + 1e-9 * reach;
+    if (std::isnan(hits[k].distance) ? boxGap2[k] > bound * bound : hits[k].distance > bound) {
+      nodeHits[k].distance = std::numeric_limits<double>::quiet_NaN();
+      continue;
+    }
+    if (measure(k).distance < best.hit.distance) best = {nodeHits[k], candidates[k], k};
+  }
+  return best;
+}
+
 // A contact from the nearest feature: normal from the feature to the centre
 // line, flipped (and the gap negative) when the centre line is outside.
-// `candidates` and `hits` are those of the query that found n.
-ContactPoint makeContact(const ObstacleTree& tree, const Nearest& n, const std::vector<int>& candidates, int segment,
-                         int obstacle, double radius) {
+// `candidates` and `found` are those of the query that found n.
+ContactPoint makeContact(const ObstacleTree& tree, const Nearest& n, const std::vector<int>& candidates,
+                         const std::vector<SegmentTriangle>& found, int segment, int obstacle, double radius) {
   ContactPoint c;
   c.segment = segment;
   c.other = obstacle;
@@ -95,7 +146,7 @@ ContactPoint makeContact(const ObstacleTree& tree, const Nearest& n, const std::
   c.radius = radius;
   c.anchor = n.hit.onTriangle;
   const Vec3 away = n.hit.onSegment - n.hit.onTriangle;
-  const Vec3 outward = pseudoNormal(tree, n, candidates, radius);
+  const Vec3 outward = pseudoNormal(tree, n, candidates, found, radius);
   const bool outside = away.dot(outward) > 0;
   if (n.hit.distance > 1e-12 * radius) {
     c.normal = (outside ? -1.0 : 1.0) * away / n.hit.distance;
@@ -108,11 +159,21 @@ ContactPoint makeContact(const ObstacleTree& tree, const Nearest& n, const std::
 
 }  // namespace
 
-void detectWallContacts(const Model& model, State& state, double margin, const ContactLaw& law) {
+double wallStiffness(double stiffness, double rigidityScale, const RodModel& rod) {
+  const double r = rod.section.radius;
+  if (!(rigidityScale > 0) || !(r > 0)) return stiffness;
+  const double rigidity = rod.material.youngModulus * std::min(rod.section.iy, rod.section.iz);
+  return std::max(stiffness, rigidityScale * rigidity / r);
+}
+
+void detectWallContacts(const Model& model, State& state, double margin, const ContactLaw& wallLaw,
+                        double rigidityScale) {
   static thread_local std::vector<int> stack, candidates;
   const double h = model.timeStep;
   for (size_t k = 0; k < state.rods.size(); ++k) {
     RodState& r = state.rods[k];
+    ContactLaw law = wallLaw;
+    law.stiffness = wallStiffness(wallLaw.stiffness, rigidityScale, model.rods[k]);
     RodContacts& rc = r.contact;
     std::swap(rc.wall, rc.previous);
     rc.wall.clear();
@@ -153,7 +214,8 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
             n = nearestFeature(tree, a, b, 4 * radius + margin, stack, candidates);
             if (n.triangle < 0) continue;
           }
-          ContactPoint c = makeContact(tree, n, candidates, e, int(o), radius);
+          const size_t listed = rc.wall.size();
+          ContactPoint c = makeContact(tree, n, candidates, hits, e, int(o), radius);
           if (!markClosing(c, r, h) && c.gap > margin) continue;
           updateContact(c, findPrevious(rc.previous, c, r), r, law, h);
           rc.wall.push_back(c);
@@ -208,6 +270,37 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
             rc.wall.push_back(q);
             ++extra;
           }
+          // Each node's own wall. The planes above are tangent near the
+          // segment's nearest point; on a curved wall they lie up to
+          // L^2 / 2R off at the far node (36 um for a 0.5 mm segment in a
+          // 7 mm sac), a free end node has no other segment whose planes
+          // would bound it, and a node sliding along a plane tilted from
+          // the wall under it goes in by the slide times the tilt: a soft
+          // coil's tip went 17-44 um into the sac while its planes said it
+          // was 20-70 um clear. A node gets the plane of its own nearest
+          // feature, pressing that node only, unless a listed plane agrees
+          // with it within kNodePlane over the slide the end-of-step check
+          // lets pass unchecked (the margin and its tolerance).
+          const double slide = margin + kMissedContact * radius;
+          for (int j = 0; j < 2; ++j) {
+            // The segment's nearest point is this node: the same feature.
+            if (n.hit.s == j) continue;
+            const Vec3& x = j ? b : a;
+            const Nearest own = nearestToNode(tree, x, j, n, candidates, reach);
+            if (own.triangle < 0 || own.hit.distance > reach) continue;
+            ContactPoint p = makeContact(tree, own, candidates, nodeHits, e, int(o), radius);
+            bool covered = false;
+            for (size_t i = listed; i < rc.wall.size() && !covered; ++i) {
+              const ContactPoint& q = rc.wall[i];
+              const double lessThanOwn = -p.gap - (q.radius - q.normal.dot(x - q.anchor));
+              covered = lessThanOwn + slide * q.normal.cross(p.normal).norm() <= kNodePlane * radius;
+            }
+            if (covered) continue;
+            p.node = j;
+            if (!markClosing(p, r, h) && p.gap > margin) continue;
+            updateContact(p, findPrevious(rc.previous, p, r), r, law, h);
+            rc.wall.push_back(p);
+          }
         }
         const bool free = rc.wall.size() == before && clear > reach;
         rc.wallClear[e] = free ? std::min(clear, reach + kLookAhead) : 0.0;
@@ -219,6 +312,7 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
     rc.wallPenetration = 0;
     for (const ContactPoint& c : rc.wall)
       rc.wallPenetration = std::max(rc.wallPenetration, -c.gap - c.radius * kWallSkin / (1 + kWallSkin));
+    rc.wallPenetrationPeak = std::max(rc.wallPenetrationPeak, rc.wallPenetration);
   }
 }
 
@@ -233,32 +327,43 @@ std::string checkWallContacts(const Model& model, const State& state, double mar
     for (int e = 0; e + 1 < r.activeNodes; ++e) {
       const Vec3 &a = r.x[e], &b = r.x[e + 1];
       const double radius = (1 + kWallSkin) * 0.5 * (r.nodes[e].radius + r.nodes[e + 1].radius);
-      // How deep the step's own contact planes (those in its implicit solve)
-      // let it go, and how near the others were: a wall not listed was more
-      // than the margin away, a listed one out of the solve (apart and not
-      // closing at the start) `gap` away. A segment that moved less than
-      // that (plus the tolerance) cannot have gone in; sliding along the
-      // planes in the solve takes more than the margin to leave them by
-      // the tolerance on any wall we mesh (0.23 mm on a 7 mm sphere).
-      double known = 0, nearestOut = margin;
+      // Per node, how deep the step's own contact planes (those in its
+      // implicit solve) let it go, and how near the others were. A plane
+      // bounds the nodes it pressed from the step's start (penetrating or
+      // closing then); a node that an iterate carried in
+      // (ContactPoint::pressed) is outside the step's linearisation, and its
+      // depth is what the iterations left, not the penalty's balance. A wall
+      // not listed was more than the margin away, a listed plane out of the
+      // node's solve as far as the node was from it at the start. A node
+      // that moved less than that (plus the tolerance) cannot have gone in;
+      // sliding along the planes in the solve takes more than the margin to
+      // leave them by the tolerance on a 7 mm sphere (0.23 mm).
+      double known[2] = {0, 0}, nearestOut[2] = {margin, margin};
       const auto first = std::lower_bound(list.begin(), list.end(), e,
                                           [](const ContactPoint& c, int seg) { return c.segment < seg; });
-      for (auto c = first; c != list.end() && c->segment == e; ++c) {
-        if (c->gap < 0 || c->closing[0] || c->closing[1])
-          known = std::max({known, c->radius - c->normal.dot(a - c->anchor), c->radius - c->normal.dot(b - c->anchor)});
-        else
-          nearestOut = std::min(nearestOut, c->gap);
-      }
-      const double moved = std::max((a - r.work.x0[e]).norm(), (b - r.work.x0[e + 1]).norm());
-      if (moved <= std::max(0.0, nearestOut) + kMissedContact * radius) continue;
+      for (auto c = first; c != list.end() && c->segment == e; ++c)
+        for (int j = 0; j < 2; ++j) {
+          if (c->node >= 0 && c->node != j) continue;
+          const double start = c->radius - c->normal.dot(r.work.x0[e + j] - c->anchor);
+          if (start > 0 || c->closing[j])
+            known[j] = std::max(known[j], c->radius - c->normal.dot(r.x[e + j] - c->anchor));
+          else
+            nearestOut[j] = std::min(nearestOut[j], -start);
+        }
+      const double tolerance = kMissedContact * radius;
+      if ((a - r.work.x0[e]).norm() <= nearestOut[0] + tolerance && (b - r.work.x0[e + 1]).norm() <= nearestOut[1] + tolerance)
+        continue;
       for (size_t o = 0; o < model.obstacles.size(); ++o) {
         if (!model.obstacles[o].contact || o >= model.obstacleTrees.size()) continue;
         const ObstacleTree& tree = *model.obstacleTrees[o];
         const Nearest n = nearestFeature(tree, a, b, 2 * radius, stack, candidates);
         if (n.triangle < 0) continue;
-        const double depth = -makeContact(tree, n, candidates, e, int(o), radius).gap;
-        if (depth - known <= kMissedContact * radius || depth - known <= worst) continue;
-        worst = depth - known;
+        // The planes' penetration is linear along the segment: at the
+        // deepest point s they allow (1 - s) known_a + s known_b.
+        const double depth = -makeContact(tree, n, candidates, hits, e, int(o), radius).gap;
+        const double allowed = (1 - n.hit.s) * known[0] + n.hit.s * known[1];
+        if (depth - allowed <= tolerance || depth - allowed <= worst) continue;
+        worst = depth - allowed;
         missed = "rod '" + model.rods[k].name + "' segment " + std::to_string(e) + " went " +
                  std::to_string(int(std::lround(depth * 1e6))) + " um into obstacle '" + model.obstacles[o].name +
                  "' within the step, " + std::to_string(int(std::lround(worst * 1e6))) +

@@ -12,7 +12,10 @@
 //    that node only: the diagonal stiffness block IS the exact Jacobian. (An
 //    earlier law, k L times the deeper end's penetration shared by the
 //    centroid, made one node's force depend on the other node: a coupling the
-//    diagonal blocks cannot hold, neutrally stable at best.)
+//    diagonal blocks cannot hold, neutrally stable at best.) A contact with
+//    ContactPoint::node >= 0 is a node's own nearest plane and presses that
+//    node only (detect.h). A node that a Newton iterate carried into its
+//    plane stays in the step's solve like a closing one (pressed).
 //  - Normal, segment pairs (self and rod contacts, point contacts): k times
 //    the penetration at the closest points, shared (1 - s, s); the diagonal
 //    gets the row sums k (1 - s), k s, which bound the rank-one Jacobian from
