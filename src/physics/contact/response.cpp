@@ -138,6 +138,7 @@ void applyStatic(std::span<const ContactPoint> contacts, const RodState& rod, co
       // Each node against its own plane, with half the segment's length: the diagonal block is exact.
       const double half = 0.5 * law.stiffness * (rod.x[c.segment + 1] - rod.x[c.segment]).norm();
       for (int end = 0; end < 2; ++end) {
+        if (c.node >= 0 && c.node != end) continue;  // a node's own plane presses that node only
         const Smoothed p = smoothed(nodePenetration(c, rod.x, end), delta);
         if (p.stiffness <= 0) continue;
         out.force[c.segment + end].head<3>() += half * p.force * c.normal;
