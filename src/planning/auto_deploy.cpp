@@ -126,6 +126,8 @@ AutoDeployResult autoDeploy(const Deployment& dep, const Model& model, State& st
       return r;
     }
     r.maxKickback = std::max(r.maxKickback, catheterTip(dep, state, ds).kickback);
+    r.maxWallPenetration = state.stats.maxWallPenetration;
+    r.maxWallPenetrationOfRadius = state.stats.maxWallPenetrationOfRadius;
     if (contacts && contacts(model, state, forces)) {
       r.wallForcesAvailable = true;
       r.wall.add(forces, dt, o.wallForceThreshold);

@@ -59,6 +59,9 @@ struct AutoDeployResult {
   int pullBacks = 0;           // repositionings (pull back, re-advance)
   bool wallForcesAvailable = false;
   WallForceStats wall;
+  // Deepest wall penetration of the wire seen at any step's contact
+  // detection (State::stats), m and as a fraction of the wire radius there.
+  double maxWallPenetration = 0, maxWallPenetrationOfRadius = 0;
   std::vector<TimedCommand> timeline;  // what was commanded, replayable
   std::vector<std::string> log;
 };

@@ -234,11 +234,15 @@ ordered_json planJson(const PlanSetup& setup, const std::vector<CandidateResult>
       c["mean_wall_force_mN"] = round6(milliNewton(r.deploy.wall.mean()));
       c["peak_wall_force_mN"] = round6(milliNewton(r.deploy.wall.peak));
       c["time_above_safety_s"] = round6(r.deploy.wall.timeAbove);
+      c["max_wall_penetration_um"] = round6(r.deploy.maxWallPenetration * 1e6);
+      c["max_wall_penetration_of_radius"] = round6(r.deploy.maxWallPenetrationOfRadius);
     } else {
       c["max_wall_force_mN"] = nullptr;
       c["mean_wall_force_mN"] = nullptr;
       c["peak_wall_force_mN"] = nullptr;
       c["time_above_safety_s"] = nullptr;
+      c["max_wall_penetration_um"] = nullptr;
+      c["max_wall_penetration_of_radius"] = nullptr;
     }
     c["kickback_mm"] = round6(mm(r.deploy.maxKickback));
     c["max_deployment_force_mN"] = round6(milliNewton(r.deploy.maxDeploymentForce));

@@ -63,6 +63,12 @@ TEST(PlanCommand, TwoCoilsGiveTheTableAndTheImages) {
     // Deployed with wall contact: a wall force is measured, not left unknown.
     ASSERT_FALSE(c["max_wall_force_mN"].is_null()) << c.dump();
     EXPECT_GE(c["max_wall_force_mN"].get<double>(), 0.0);
+    // And the wire stayed out of the wall: under 10 % of its radius (the
+    // contact issue's bound), the record of every step's detection.
+    ASSERT_TRUE(c["max_wall_penetration_of_radius"].is_number()) << c.dump();
+    EXPECT_LT(c["max_wall_penetration_of_radius"].get<double>(), 0.1) << c.dump();
+    EXPECT_NEAR(c["max_wall_penetration_um"].get<double>(), 1e3 * 0.127 * c["max_wall_penetration_of_radius"].get<double>(),
+                0.01 + 1e-3 * c["max_wall_penetration_um"].get<double>());
     EXPECT_TRUE(c.contains("kickback_mm"));
     if (ui) {
       ASSERT_TRUE(c.contains("screenshot")) << c.dump();
