@@ -110,9 +110,11 @@ namespace {
 // for ever: a pair pressing is pushed out to just apart, where its
 // linearisation has no stiffness and the next step sags back through it
 // (several pairs of nearly parallel segments take turns). Smoothed, a pair
-// just apart keeps its stiffness. At rest under a load F a pair keeps
-// delta ln(1 + F / (k delta)) of the hard law's depth F / k: both well
-// under a micrometre for loops resting under gravity.
+// just apart keeps its stiffness. At rest under a load F a pair sits at
+// depth delta ln(exp(F / (k delta)) - 1): the hard law's F / k for F >> k
+// delta, apart by about delta ln(k delta / F) for F << k delta (0.9 um for
+// the 0.1 mm wire resting under gravity in tests/physics/
+// statics_contact_test.cpp).
 // Point contacts give their exact Jacobian for fixed s, t and normal (the
 // normal's own turning adds (d / distance) k (1 - n n^T), a few per cent of
 // it: Newton converges linearly at that rate near the end).
@@ -123,6 +125,7 @@ struct Smoothed {
 };
 
 Smoothed smoothed(double depth, double delta) {
+  if (!(delta > 0)) return depth > 0 ? Smoothed{depth, 1.0} : Smoothed{};
   const double x = depth / delta;
   if (x > 30) return {depth, 1.0};
   if (x < -30) return {};
