@@ -203,7 +203,7 @@ std::string Bounds::describe() const {
     s += std::string(minOpen ? " > " : " >= ") + formatNumber(min);
   else if (hasMax)
     s += std::string(maxOpen ? " < " : " <= ") + formatNumber(max);
-  if (!unit.empty()) s.append(" ").append(unit);
+  if (!unit.empty() && unit != "1") s.append(" ").append(unit);  // "1": a ratio, no unit to show
   return s;
 }
 
