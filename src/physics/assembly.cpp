@@ -48,7 +48,7 @@ double assemble(const Model& model, int rodIndex, RodState& rod, double time, do
     w.force[l.node].tail<3>() += loadFactor * l.moment;
   }
   RodForces out{w.force, w.effectK, w.effectD, w.effectsTouchedMatrix, coupling};
-  const EffectContext ctx{model, rm, rod, time, loadFactor, coupling != nullptr};
+  const EffectContext ctx{model, rm, rod, time, loadFactor};
   for (const EffectUse& u : model.effects)
     if (u.enabled) u.effect->apply(ctx, u.values, out);
   return energy;

@@ -27,7 +27,7 @@ double assembleRodInto(const Model& model, int rodIndex, RodState& rod, double t
                        const TangentRequest& tangent);
 
 // For the static solver: forces at load factor `loadFactor` with the effects
-// told it is a static solve (EffectContext::statics), no elastic tangent,
+// told it is a static solve (RodForces::coupling set), no elastic tangent,
 // and the effects' couplings between nodes collected in `coupling` (cleared
 // first). Returns the elastic energy (J).
 double assembleRodStatic(const Model& model, int rodIndex, RodState& rod, double loadFactor,

@@ -26,11 +26,6 @@ struct EffectContext {
   const RodState& state;
   double time = 0;        // s
   double loadFactor = 1;  // static continuation scales external effects by this
-  // A static solve (solveStatic), not a time step: velocities are zero and
-  // there is no step length. Contacts then act without friction or damping:
-  // with Coulomb friction a static equilibrium depends on the path that led
-  // to it, which a static solve does not follow.
-  bool statics = false;
 };
 
 // Stiffness between two nodes of one rod that are not neighbours (a contact
@@ -47,10 +42,14 @@ struct RodForces {
   std::vector<Mat6>& stiffness;  // -d force / d (position, rotation), added to the implicit matrix
   std::vector<Mat6>& damping;    // -d force / d (velocity, angular velocity)
   bool& touchedMatrix;           // set true when writing stiffness or damping
-  // Only the static solver asks for couplings (it solves with a general
-  // sparse factorisation when there are any); a dynamic step's
-  // block-tridiagonal solve holds neighbours only, so there it is nullptr
-  // and contacts lump what they can onto the diagonal blocks.
+  // Set only by the static solver (solveStatic), which solves with a
+  // general sparse factorisation when there are any couplings: effects may
+  // read it as "this is a static solve" (zero velocities, no step length;
+  // contacts then act without friction or damping, since with Coulomb
+  // friction an equilibrium depends on the path that led to it, which a
+  // static solve does not follow). A dynamic step's block-tridiagonal solve
+  // holds neighbours only: nullptr, and contacts lump what they can onto
+  // the diagonal blocks.
   std::vector<NodeCoupling>* coupling = nullptr;
 };
 
