@@ -13,7 +13,7 @@
 #include <string>
 
 #include "app/bench_contact.h"
-#include "physics/controller.h"
+#include "physics/run.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
 
@@ -137,14 +137,12 @@ void benchDeployment(Figures& fig, int beams, double speedMmS, bool quick) {
   d.coilMaterial = {7.5e9, shearModulusOf(7.5e9, 0.39), 21450};
   d.coilSection = circularSection(0.3556e-3, 0.39);
   d.tip.normal = Vec3(0, 0, 1);
-  const Deployment dep = addDeployment(d, def);
+  def.device = d;
   const Model m = compileModel(def);
   State s = makeState(m);
-  DeploymentState ds = initDeployment(dep, m, s, 0.0, 0.0);
-  DeploymentController ctl;
   const double v = speedMmS * 1e-3, simulated = (quick ? 0.25 : 1.0) * d.coilLength / v;
   const auto t0 = Clock::now();
-  const TimelineRun run = runTimeline(dep, m, s, ds, ctl, {{0.0, {DeviceCommand::Kind::Push, v, 0}}}, simulated);
+  const TimelineRun run = runTimeline(m, s, {{0.0, {DeviceCommand::Kind::Push, v, 0}}}, simulated);
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
   const std::string key = "deploy_realtime_ratio_n" + std::to_string(beams) + "_" + std::to_string(int(speedMmS)) + "mm_s";
   fig.set(key, run.ok ? simulated / wall : 0.0);

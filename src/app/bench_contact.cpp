@@ -10,7 +10,7 @@
 #include <cstdio>
 
 #include "geometry/phantom.h"
-#include "physics/controller.h"
+#include "physics/run.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
 
@@ -56,7 +56,7 @@ void benchContactFigures(const std::function<void(const std::string&, double)>& 
   d.tip.position = 1e-3 * (info.neck.point + 2.0 * info.neck.normal);
   d.tip.normal = info.axisU;
   d.catheterDrawLength = 2e-3;
-  const Deployment dep = addDeployment(d, def);
+  def.device = d;
   const Model model = compileModel(def);
   Model free = model;
   for (EffectUse& u : free.effects)
@@ -64,21 +64,17 @@ void benchContactFigures(const std::function<void(const std::string&, double)>& 
 
   State s = makeState(model);
   State scratch = s;
-  DeploymentState ds = initDeployment(dep, model, s, 0.0, 0.0);
-  DeploymentController ctl;
   const double speed = 0.01, pushed = quick ? 0.01 : 0.06;
-  ctl.command(dep, ds, {DeviceCommand::Kind::Push, speed, pushed});
+  command(model, s, {DeviceCommand::Kind::Push, speed, pushed});
   const int steps = int(pushed / speed / model.timeStep), every = quick ? 5 : 10;
   double detect = 0, contact = 0, contactFree = 0, penetration = 0;
   int samples = 0;
   bool ok = true, freeOk = true;
   State sFree = makeState(free);
-  DeploymentState dsFree = initDeployment(dep, free, sFree, 0.0, 0.0);
-  DeploymentController ctlFree;
-  ctlFree.command(dep, dsFree, {DeviceCommand::Kind::Push, speed, pushed});
+  command(free, sFree, {DeviceCommand::Kind::Push, speed, pushed});
   for (int i = 0; i < steps && ok; ++i) {
-    ctl.advance(dep, model, s, ds, model.timeStep);
-    ctlFree.advance(dep, free, sFree, dsFree, model.timeStep);
+    moveDevice(model, s);
+    moveDevice(free, sFree);
     const bool sample = i % every == every - 1;
     if (sample) {
       scratch = s;

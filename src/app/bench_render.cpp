@@ -9,7 +9,7 @@
 
 #include "io/scene.h"
 #include "io/units.h"
-#include "physics/controller.h"
+#include "physics/run.h"
 #include "ui/render_bench.h"
 
 namespace coilsim {
@@ -45,17 +45,14 @@ void benchRenderFigures(const std::function<void(const std::string&, double)>& s
   Model model;
   State state;
   try {
-    const io::CompiledScene compiled = io::compileSceneWithDeployment(io::loadScene(scene.string()));
-    model = compileModel(compiled.model);
+    model = compileModel(io::compileScene(io::loadScene(scene.string())));
     state = makeState(model);
-    if (compiled.deployment) {
-      const DeploymentState ds =
-          initDeployment(*compiled.deployment, model, state, compiled.initialDeployed, compiled.initialTwist);
+    if (model.device) {
       // Physics as in use: the coil pushed at a clinical 5 mm/s while drawing.
       DeviceCommand push;
       push.kind = DeviceCommand::Kind::Push;
       push.rate = units::mmPerSToMPerS(5.0);
-      o.deployment = ui::DeploymentSetup{*compiled.deployment, ds, {{0.0, push}}};
+      o.timeline = {{0.0, push}};
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench: render figures skipped: %s\n", e.what());

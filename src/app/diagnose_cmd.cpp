@@ -8,13 +8,12 @@
 #include <filesystem>
 #include <sstream>
 
-#include "app/run_scene.h"
+#include "app/exit_codes.h"
 #include "app/validate_cmd.h"
 #include "io/json_reader.h"
 #include "io/json_writer.h"
 #include "io/measurement.h"
 #include "io/units.h"
-#include "validation/effects.h"
 
 namespace coilsim::app {
 namespace {
@@ -61,7 +60,6 @@ int runDiagnose(const std::vector<std::string>& argsIn) {
       std::string why;
       if (f != "young_modulus" && !describeParam(f, p, m, why)) return usage("--fit: " + why + " (diagnose fits model parameters only)");
     }
-    ensureValidationEffects();
     for (const std::string& c : candidateNames) {
       (void)EffectRegistry::global().use(c);  // throws naming an unknown effect
       o.candidates.push_back(candidateFor(c, m));

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "app/format.h"
-#include "app/run_scene.h"
+#include "app/exit_codes.h"
 #include "io/json_reader.h"
 #include "io/json_writer.h"
 #include "io/timeline.h"
@@ -146,7 +146,6 @@ int runPractice(const std::vector<std::string>& args) {
     auto picture = [&](const planning::PracticeSession& s) {
       if (screenshot.empty()) return;
       ui::ViewerOptions v = practiceViewer(pc, s, s.view());
-      v.deployment = ui::DeploymentSetup{s.deployment(), s.deploymentState(), {}};
       v.screenshotPath = screenshot;
       if (!ui::renderOffscreen(s.model(), s.state(), v, shotError)) std::fprintf(stderr, "coilsim practice: %s\n", shotError.c_str());
     };

@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "app/format.h"
-#include "app/run_scene.h"
+#include "app/exit_codes.h"
 #include "app/window_setup.h"
 #include "io/json_writer.h"
 #include "planning/run_contacts.h"
@@ -32,10 +32,9 @@ class WindowScorer : public ui::RunObserver {
     scorer_->commandAccepted(t, planning::commandJson({t, given}), applied);
   }
   void viewChanged(double t, const std::string& view) override { scorer_->viewChanged(t, view); }
-  void beforeDevice(const DeploymentState& ds) override { scorer_->beforeDevice(ds); }
-  void afterDevice(const State& s, const DeploymentState& ds) override { scorer_->afterDevice(s, ds); }
-  void afterStep(const Model& m, const State& s, const DeploymentState& ds, bool ok, const std::string& why) override {
-    scorer_->afterStep(m, s, ds, ok, why);
+  void beforeStep(const State& s) override { scorer_->beforeStep(s); }
+  void afterStep(const Model& m, const State& s, bool ok, const std::string& why) override {
+    scorer_->afterStep(m, s, ok, why);
   }
   // Reset: a new session from the start.
   void restarted() override { scorer_.emplace(pc_, coil_, dep_, dt_); }
@@ -50,8 +49,8 @@ class WindowScorer : public ui::RunObserver {
             {"repositionings", std::to_string(s.repositionings), false},
             {"recording", outputs_->record.empty() ? std::string("off (--record SESSION)") : outputs_->record, false}};
   }
-  void closed(const Model& m, const State& s, const DeploymentState& ds) override {
-    const planning::ScoreSheet score = scorer_->finish(m, s, ds);
+  void closed(const Model& m, const State& s) override {
+    const planning::ScoreSheet score = scorer_->finish(m, s);
     const std::string text = io::formatJson(planning::scoreJson(score));
     // Each file on its own, and the sheet printed whatever happens to them:
     // a disk that filled up during the session must not take the score with it.
@@ -90,7 +89,6 @@ ui::SceneSetup practiceSetup(const planning::PracticeCase& pc, const std::string
   s.model = session.model();
   s.state = session.state();
   ui::ViewerOptions v = practiceViewer(pc, session, "3d");
-  s.deployment = v.deployment;
   s.draw = v.addDrawData;
   const auto scorer = std::make_shared<WindowScorer>(pc, coil, session.deployment(), session.model().timeStep, outputs);
   s.observer = scorer;
@@ -117,7 +115,6 @@ ui::ViewerOptions practiceViewer(const planning::PracticeCase& pc, const plannin
   const Deployment dep = session.deployment();
   v.addDrawData = [dep](const Model& m, const State& s, DrawData& d) { planning::appendInactiveCatheter(m, s, dep, d); };
   v.readouts = liveReadouts(pc.sac, dep, pc.goal.maxWallForce, "Practice: " + pc.name);
-  v.deployment = ui::DeploymentSetup{dep, session.deploymentState(), {}};
   return v;
 }
 
@@ -132,7 +129,6 @@ int practiseInWindow(const planning::PracticeCase& pc, std::string coil, const s
   ui::ViewerOptions v;
   v.scenePath = pc.name;
   v.view = view;
-  v.deployment = first.deployment;
   v.addDrawData = first.draw;
   v.readouts = first.readouts;
   v.observer = first.observer;

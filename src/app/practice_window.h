@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "app/run_scene.h"
-#include "physics/controller.h"
+#include "app/exit_codes.h"
+#include "physics/run.h"
 #include "planning/case_file.h"
 #include "planning/practice.h"
 #include "ui/viewer.h"

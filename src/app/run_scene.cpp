@@ -11,7 +11,7 @@
 #include "io/scene.h"
 #include "io/timeline.h"
 #include "io/units.h"
-#include "physics/controller.h"
+#include "physics/run.h"
 #include "physics/deployment.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
@@ -88,7 +88,7 @@ Outcome simulateDynamic(const Model& model, State& state, long steps, io::RunRec
   StepReport report;
   long done = 0;
   for (; done < steps; ++done) {
-    report = step(model, state);
+    report = advance(model, state);
     if (!report.ok()) break;
     progress.update(done + 1, state.time);
   }
@@ -117,8 +117,7 @@ std::string nameCommand(const std::string& entry, const std::vector<TimedCommand
 // The scene's deployment driven by the timeline (possibly empty) for `steps`
 // steps. Refused commands are printed and become warnings, not failures; a
 // refused step fails the run.
-Outcome simulateDeployment(const Deployment& dep, const Model& model, State& state, DeploymentState& ds,
-                           const std::vector<TimedCommand>& timeline, const std::string& timelineFile, long steps,
+Outcome simulateDeployment(const Model& model, State& state, const std::vector<TimedCommand>& timeline, const std::string& timelineFile, long steps,
                            io::RunRecord& record) {
   const double duration = double(steps) * model.timeStep;
   // runTimeline starts a command at the first step that begins at or after its time.
@@ -132,8 +131,7 @@ Outcome simulateDeployment(const Deployment& dep, const Model& model, State& sta
       record.warnings.push_back(w);
     }
   const auto start = Clock::now();
-  DeploymentController controller;
-  TimelineRun run = runTimeline(dep, model, state, ds, controller, timeline, duration);
+  TimelineRun run = runTimeline(model, state, timeline, duration);
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   // The last entry of a failed run says which step was refused; the others
   // are refused commands and limits reached on the way.
@@ -147,8 +145,10 @@ Outcome simulateDeployment(const Deployment& dep, const Model& model, State& sta
     std::fprintf(stderr, "coilsim: %s: %s\n", source.c_str(), entry.c_str());
     if (refused) record.warnings.push_back(source + ": " + entry);
   }
+  const Deployment& dep = *model.device;
+  const DeviceState& ds = state.device;
   record.deployment = ds;
-  record.catheterTip = catheterTip(dep, state, ds);
+  record.catheterTip = catheterTip(model, state);
   const std::string tipLine = dep.flexible() ? fmt(", catheter tip at %.3g deg", units::radToDeg(record.catheterTip->angle)) +
                                                    fmt(", kickback %.4g mm", units::mToMm(record.catheterTip->kickback))
                                              : std::string();
@@ -210,10 +210,8 @@ int run(const RunOptions& o) {
   if (spec.solve == io::SolveMode::Static && (o.durationS || o.steps))
     return usageError(o.scene + ": --duration and --steps apply to dynamic scenes; this scene has \"solve\": \"static\"");
   Model model;
-  io::CompiledScene compiled;
   try {
-    compiled = io::compileSceneWithDeployment(spec);
-    model = compileModel(compiled.model);
+    model = compileModel(io::compileScene(spec));
   } catch (const io::InputError&) {
     throw;
   } catch (const std::exception& e) {
@@ -222,15 +220,12 @@ int run(const RunOptions& o) {
   // A timeline drives a deployment: without one there is nothing to push.
   std::vector<TimedCommand> timeline;
   if (!o.input.empty()) {
-    if (!compiled.deployment)
+    if (!model.device)
       return usageError(o.input + ": a timeline drives a coil deployment, but " + o.scene +
                         " has no \"deployment\" block (docs/scene-format.md)");
     timeline = io::loadTimeline(o.input);  // throws InputError
   }
   State state = makeState(model);
-  DeploymentState deployment;
-  if (compiled.deployment)
-    deployment = initDeployment(*compiled.deployment, model, state, compiled.initialDeployed, compiled.initialTwist);
   io::RunRecord record;
   record.scene = o.scene;
   record.sceneName = spec.name;
@@ -252,24 +247,20 @@ int run(const RunOptions& o) {
     if (o.steps) v.runSeconds = double(*o.steps) * model.timeStep;
     if (o.durationS) v.runSeconds = *o.durationS;
     // The window plays the timeline as the headless run does (ui::Session).
-    if (compiled.deployment) {
-      v.deployment = ui::DeploymentSetup{*compiled.deployment, deployment, timeline};
+    if (model.device) {
+      v.timeline = timeline;
       // Packing, protrusion and wall-force warnings live when an obstacle is a phantom with its sac.
       std::string note;
       const std::optional<planning::Sac> sac = planning::sceneSac(spec, note);
-      if (sac) v.readouts = liveReadouts(*sac, *compiled.deployment, planning::Goal{}.maxWallForce, "Aneurysm read-outs");
+      if (sac) v.readouts = liveReadouts(*sac, *model.device, planning::Goal{}.maxWallForce, "Aneurysm read-outs");
       std::printf("coilsim: live read-outs: %s\n", sac ? note.c_str() : ("none: " + note).c_str());
       v.setup = sceneSetupChoices(spec, sac);
     }
-    v.finalDeployment = &deployment;
-    // A coil or catheter chosen in the panel replaces the model and the deployment.
-    std::optional<Deployment> finalSetup = compiled.deployment;
-    v.finalModel = &model;
-    v.finalDeploymentSetup = &finalSetup;
+    // A coil or catheter chosen in the panel replaces the model.
     const int code = ui::runWindow(model, state, v);
-    if (finalSetup) {
-      record.deployment = deployment;
-      record.catheterTip = catheterTip(*finalSetup, state, deployment);
+    if (model.device) {
+      record.deployment = state.device;
+      record.catheterTip = catheterTip(model, state);
     }
     return writeOut(o, model, state, record) ? code : kExitUsage;
 #else
@@ -285,8 +276,8 @@ int run(const RunOptions& o) {
     r = simulateStatic(model, state, spec, record);
   } else {
     const long steps = o.steps ? *o.steps : io::stepCount(o.durationS ? *o.durationS : spec.durationS, model.timeStep);
-    if (compiled.deployment)
-      r = simulateDeployment(*compiled.deployment, model, state, deployment, timeline, o.input, steps, record);
+    if (model.device)
+      r = simulateDeployment(model, state, timeline, o.input, steps, record);
     else
       r = simulateDynamic(model, state, steps, record);
   }
@@ -298,7 +289,6 @@ int run(const RunOptions& o) {
 #ifdef COILSIM_HAVE_UI
     std::string error;
     ui::ViewerOptions v = viewerOptions(o);
-    if (compiled.deployment) v.deployment = ui::DeploymentSetup{*compiled.deployment, deployment, {}};
     if (!ui::renderOffscreen(model, state, v, error)) {
       std::fprintf(stderr, "coilsim: screenshot %s failed: %s\n", o.screenshot.c_str(), error.c_str());
       return kExitFailure;

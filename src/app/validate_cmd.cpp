@@ -9,14 +9,13 @@
 #include <filesystem>
 #include <sstream>
 
-#include "app/run_scene.h"
+#include "app/exit_codes.h"
 #include "app/validate_plots.h"
 #include "app/validate_window.h"
 #include "io/json_reader.h"
 #include "io/json_writer.h"
 #include "io/measurement.h"
 #include "io/units.h"
-#include "validation/effects.h"
 
 namespace coilsim::app {
 namespace {
@@ -107,7 +106,6 @@ std::string parseWorkbenchArgs(const std::vector<std::string>& args, bool allowE
 }
 
 std::vector<std::string> expandFitNames(const std::vector<std::string>& names, const Measurement& m) {
-  ensureValidationEffects();
   std::vector<std::string> out;
   for (const std::string& n : names) {
     if (n.find('.') == std::string::npos && EffectRegistry::global().find(n)) {

@@ -10,11 +10,10 @@
 #include <cstdio>
 #include <functional>
 
-#include "app/run_scene.h"
+#include "app/exit_codes.h"
 #include "io/json_reader.h"
 #include "io/measurement.h"
 #include "io/units.h"
-#include "validation/effects.h"
 
 #ifdef COILSIM_HAVE_UI
 #include "ui/validation_panel.h"
@@ -102,7 +101,6 @@ int runValidateWindow(const WorkbenchArgs& a, const WindowArgs& w) {
     std::fprintf(stderr, "coilsim: %s\n", e.what());
     return kExitUsage;
   }
-  ensureValidationEffects();
   const SimOptions so = simOptionsOf(a);
   StageSimulator sim(m, so);
   const Comparison cmp(m);

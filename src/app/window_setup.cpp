@@ -121,14 +121,10 @@ ui::SetupChoices sceneSetupChoices(const io::SceneSpec& scene, const std::option
     }
     if (catheter >= 0) applyCatheter(catheters.at(size_t(catheter)), dep);
     io::checkScene(spec);  // throws InputError saying what does not fit
-    const io::CompiledScene compiled = io::compileSceneWithDeployment(spec);
     ui::SceneSetup s;
-    s.model = compileModel(compiled.model);
+    s.model = compileModel(io::compileScene(spec));
     s.state = makeState(s.model);
-    const DeploymentState ds =
-        initDeployment(*compiled.deployment, s.model, s.state, compiled.initialDeployed, compiled.initialTwist);
-    s.deployment = ui::DeploymentSetup{*compiled.deployment, ds, {}};
-    if (sac) s.readouts = liveReadouts(*sac, *compiled.deployment, planning::Goal{}.maxWallForce, "Aneurysm read-outs");
+    if (sac) s.readouts = liveReadouts(*sac, *s.model.device, planning::Goal{}.maxWallForce, "Aneurysm read-outs");
     s.loaded = "loaded " + coilName + " (" + fmt("%g", dep.lengthMm) + " mm, " + std::to_string(dep.beams) +
                " beams) in the " + (catheter >= 0 ? catheters[size_t(catheter)].label : "scene's") + " catheter";
     return s;

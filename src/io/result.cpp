@@ -72,7 +72,7 @@ nlohmann::ordered_json resultJson(const Model& model, const State& state, const 
   }
   out["rods"] = std::move(rods);
   if (run.deployment) {
-    const DeploymentState& d = *run.deployment;
+    const DeviceState& d = *run.deployment;
     out["deployment"] = {{"deployed_mm", units::mToMm(d.deployed)},
                          {"twist_deg", units::radToDeg(d.twist)},
                          {"detached", d.detached},

@@ -26,7 +26,7 @@ struct RunRecord {
   std::string error;          // why, when status is not "ok"
   std::optional<StaticReport> statics;  // static solves only
   std::vector<std::string> warnings;    // scene warnings and refused commands; the state's are added
-  std::optional<DeploymentState> deployment;  // scenes with a deployment
+  std::optional<DeviceState> deployment;  // scenes with a deployment
   std::optional<CatheterTip> catheterTip;     // its catheter tip (kickback, angle), when there is one
 };
 

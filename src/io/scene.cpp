@@ -209,10 +209,9 @@ DeploymentDef compileDeployment(const SceneSpec& s, const DeploymentSpec& d) {
 
 }  // namespace
 
-CompiledScene compileSceneWithDeployment(const SceneSpec& s) {
+ModelDef compileScene(const SceneSpec& s) {
   using namespace units;
-  CompiledScene out;
-  ModelDef& def = out.model;
+  ModelDef def;
   def.gravity = s.gravityMS2;
   def.timeStep = s.solve == SolveMode::Dynamic ? s.timeStepS : 1e-3;  // unused by static solves
   def.newtonIterations = s.newtonIterations;
@@ -254,20 +253,18 @@ CompiledScene compileSceneWithDeployment(const SceneSpec& s) {
   }
   // The deployment's rods come after the scene's, so rod indices of the file hold.
   if (s.deployment) {
-    const DeploymentDef dd = compileDeployment(s, *s.deployment);
+    def.device = compileDeployment(s, *s.deployment);
     try {
-      out.deployment = addDeployment(dd, def);
+      // compileModel builds it again; built here, a bad deployment is named by its JSON path.
+      ModelDef probe;
+      (void)addDeployment(*def.device, probe);
     } catch (const std::exception& ex) {
       fail(s, "/deployment", std::string("cannot build the deployment: ") + ex.what());
     }
-    out.initialDeployed = dd.initialDeployed;
-    out.initialTwist = dd.initialTwist;
   }
   def.obstacles = compileObstacles(s.obstacles, s.file);
-  return out;
+  return def;
 }
-
-ModelDef compileScene(const SceneSpec& s) { return compileSceneWithDeployment(s).model; }
 
 StaticOptions staticOptions(const SceneSpec& s) {
   StaticOptions o;

@@ -155,22 +155,10 @@ SceneSpec parseScene(const nlohmann::json& document, const std::string& file);
 // names, what a static solve needs. Throws InputError naming the JSON path.
 void checkScene(const SceneSpec& spec);
 
-// A compiled scene: the physics definition, and the constants of its
-// deployment when it has one (its rods are appended to `model` after the
-// scene's rods by addDeployment), with the initial deployed length and twist.
-struct CompiledScene {
-  ModelDef model;
-  std::optional<Deployment> deployment;
-  double initialDeployed = 0;  // m
-  double initialTwist = 0;     // rad
-};
-
-// Converts to SI and builds the physics definition. Expects a checked spec;
-// throws InputError naming the JSON path if a rest shape or the deployment
-// cannot be built.
-CompiledScene compileSceneWithDeployment(const SceneSpec& spec);
-// The same, keeping the model definition only (the deployment's rods are in
-// it, but not its constants: a run that drives a deployment needs the above).
+// Converts to SI and builds the physics definition, the deployment (when
+// the scene has one) in ModelDef::device. Expects a checked spec; throws
+// InputError naming the JSON path if a rest shape or the deployment cannot
+// be built.
 ModelDef compileScene(const SceneSpec& spec);
 
 // Static solver settings of the scene.

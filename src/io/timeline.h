@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "physics/controller.h"
+#include "physics/run.h"
 
 namespace coilsim::io {
 

@@ -11,7 +11,7 @@
 // (the coil's from the coil material that is there now, so it changes as the
 // coil slides).
 #include "physics/math.h"
-#include "physics/model.h"
+#include "physics/element.h"
 #include "physics/rest_shape.h"
 #include "physics/section.h"
 

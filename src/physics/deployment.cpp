@@ -32,7 +32,7 @@ void addCoilInside(const Deployment& dep, NodeProps& node, double length) {
 
 // The composite part of a flexible catheter: element constants and node
 // properties of catheter nodes 0..T for the coil lying inside now.
-void rebuildComposite(const Deployment& dep, RodState& chain, const DeploymentState& ds) {
+void rebuildComposite(const Deployment& dep, RodState& chain, const DeviceState& ds) {
   const int T = dep.tipNode;
   const double L = dep.coilLength, l = ds.deployed, h = dep.spacing, S = dep.catheterArc[T];
   for (int i = 0; i <= T; ++i) chain.nodes[i] = dep.catheterNodes[i];
@@ -62,7 +62,7 @@ void rebuildComposite(const Deployment& dep, RodState& chain, const DeploymentSt
 
 // Rewrites the chain's element constants and node properties for the
 // current first outside node k, deployed length and twist.
-void rebuildChain(const Deployment& dep, const Model& model, RodState& chain, const DeploymentState& ds,
+void rebuildChain(const Deployment& dep, const Model& model, RodState& chain, const DeviceState& ds,
                   bool allBeams) {
   const int N = dep.coilBeams, k = ds.firstOutside, T = dep.tipNode;
   const double h = dep.spacing;
@@ -196,6 +196,8 @@ Deployment addDeployment(const DeploymentDef& d, ModelDef& def) {
   dep.tip = d.tip;
   dep.maxPushSpeed = d.maxPushSpeed;
   dep.maxTwistRate = d.maxTwistRate;
+  dep.initialDeployed = d.initialDeployed;
+  dep.initialTwist = d.initialTwist;
   dep.retractDirection = dir.normalized();
   dep.catheterArc = {0.0};
   dep.catheterNodes = {NodeProps{}};
@@ -239,6 +241,7 @@ Deployment addDeployment(const DeploymentDef& d, ModelDef& def) {
   // Held: every catheter node within the held length (the tip node alone for the rigid tip).
   for (int i = 0; i <= T; ++i)
     if (i == 0 || dep.catheterArc[i] <= d.catheter.heldLength * (1 + 1e-12)) chain.constraints.push_back({i, kAllDofs});
+  if (!d.tipClamped) chain.constraints.front().mask = kFreeDofs;
   dep.chainRod = int(def.rods.size());
   def.rods.push_back(chain);
   dep.freeRod = int(def.rods.size());
@@ -270,9 +273,10 @@ Deployment addDeployment(const DeploymentDef& d, ModelDef& def) {
   return dep;
 }
 
-DeploymentState initDeployment(const Deployment& dep, const Model& model, State& state, double deployed,
-                               double twist) {
-  DeploymentState ds;
+void resetDevice(const Model& model, State& state, double deployed, double twist) {
+  const Deployment& dep = *model.device;
+  DeviceState& ds = state.device;
+  ds = DeviceState{};
   ds.deployed = std::clamp(deployed, 0.0, dep.coilLength);
   ds.twist = twist;
   const int N = dep.coilBeams, T = dep.tipNode;
@@ -305,12 +309,12 @@ DeploymentState initDeployment(const Deployment& dep, const Model& model, State&
   for (int i = 0; i < int(chain.v.size()); ++i) chain.v[i].setZero(), chain.w[i].setZero();
   ds.tipStart = chain.x[T];
   ds.exitStart = chain.q[T] * Vec3::UnitX();
-  syncCatheterDrawing(dep, state);
-  return ds;
+  syncCatheterDrawing(model, state);
 }
 
-void setDeployment(const Deployment& dep, const Model& model, State& state, DeploymentState& ds, double deployed,
-                   double twist) {
+void setDeployment(const Model& model, State& state, double deployed, double twist) {
+  const Deployment& dep = *model.device;
+  DeviceState& ds = state.device;
   if (ds.detached) return;
   RodState& chain = state.rods[dep.chainRod];
   const int N = dep.coilBeams, T = dep.tipNode;
@@ -359,7 +363,9 @@ void setDeployment(const Deployment& dep, const Model& model, State& state, Depl
   rebuildChain(dep, model, chain, ds, shifted);
 }
 
-void setTipOffset(const Deployment& dep, State& state, DeploymentState& ds, double offset) {
+void setTipOffset(const Model& model, State& state, double offset) {
+  const Deployment& dep = *model.device;
+  DeviceState& ds = state.device;
   const Vec3 back = -dep.retractDirection;
   const double change = offset - ds.tipOffset;
   ds.tipOffset = offset;
@@ -367,7 +373,9 @@ void setTipOffset(const Deployment& dep, State& state, DeploymentState& ds, doub
     for (Pose& t : state.rods[rod].targets) t.position += change * back;
 }
 
-std::string detach(const Deployment& dep, const Model& model, State& state, DeploymentState& ds) {
+std::string detach(const Model& model, State& state) {
+  const Deployment& dep = *model.device;
+  DeviceState& ds = state.device;
   if (ds.detached) return "the coil is detached already";
   if (ds.deployed < dep.coilLength - 1e-9)
     return "the coil is not fully out of the catheter (" + std::to_string(ds.deployed * 1e3) + " of " +
@@ -398,13 +406,14 @@ std::string detach(const Deployment& dep, const Model& model, State& state, Depl
   if (dep.flexible()) chain.nodes[T] = dep.catheterNodes[T];
   else chain.nodes[0] = coilNodeProps(dep, 0.5 * dep.spacing);
   ds.detached = true;
+  ds.releasedAt = chain.x[T];
   return {};
 }
 
 namespace {
 
 // Coil mass the chain's (or free rod's) nodes carry; the catheter's own is taken off.
-double coilMassInNodes(const Deployment& dep, const State& state, const DeploymentState& ds, double& outsideLength) {
+double coilMassInNodes(const Deployment& dep, const State& state, const DeviceState& ds, double& outsideLength) {
   outsideLength = 0;
   if (ds.detached) {
     const RodState& r = state.rods[dep.freeRod];
@@ -421,13 +430,15 @@ double coilMassInNodes(const Deployment& dep, const State& state, const Deployme
 }
 
 // Coil inside the catheter but behind its base (not simulated).
-double coilBehindBase(const Deployment& dep, const DeploymentState& ds) {
+double coilBehindBase(const Deployment& dep, const DeviceState& ds) {
   return ds.detached ? 0.0 : std::max(0.0, dep.coilLength - ds.deployed - dep.catheterArc[dep.tipNode]);
 }
 
 }  // namespace
 
-double representedCoilLength(const Deployment& dep, const State& state, const DeploymentState& ds) {
+double representedCoilLength(const Model& model, const State& state) {
+  const Deployment& dep = *model.device;
+  const DeviceState& ds = state.device;
   double outsideLength = 0;
   const double mass = coilMassInNodes(dep, state, ds, outsideLength);
   if (ds.detached) return outsideLength;
@@ -440,12 +451,16 @@ double representedCoilLength(const Deployment& dep, const State& state, const De
   return coilBehindBase(dep, ds) + outsideLength + (mass - outsideMass) / (dep.material.density * dep.section.area);
 }
 
-double representedCoilMass(const Deployment& dep, const State& state, const DeploymentState& ds) {
+double representedCoilMass(const Model& model, const State& state) {
+  const Deployment& dep = *model.device;
+  const DeviceState& ds = state.device;
   double outsideLength = 0;
   return dep.material.density * dep.section.area * coilBehindBase(dep, ds) + coilMassInNodes(dep, state, ds, outsideLength);
 }
 
-CatheterTip catheterTip(const Deployment& dep, const State& state, const DeploymentState& ds) {
+CatheterTip catheterTip(const Model& model, const State& state) {
+  const Deployment& dep = *model.device;
+  const DeviceState& ds = state.device;
   const RodState& chain = state.rods[dep.chainRod];
   const int T = dep.tipNode;
   CatheterTip tip;
@@ -461,7 +476,8 @@ CatheterTip catheterTip(const Deployment& dep, const State& state, const Deploym
   return tip;
 }
 
-void syncCatheterDrawing(const Deployment& dep, State& state) {
+void syncCatheterDrawing(const Model& model, State& state) {
+  const Deployment& dep = *model.device;
   if (!dep.flexible()) return;
   const RodState& chain = state.rods[dep.chainRod];
   RodState& cath = state.rods[dep.catheterRod];

@@ -15,7 +15,7 @@ struct Sample {
 
 // The chain's coil nodes as a curve of arc length from the tip (the tip
 // node at s = 0 with the coil's frame there).
-std::vector<Sample> coilCurve(const Deployment& dep, const RodState& chain, const DeploymentState& ds) {
+std::vector<Sample> coilCurve(const Deployment& dep, const RodState& chain, const DeviceState& ds) {
   const int T = dep.tipNode;
   std::vector<Sample> out;
   out.push_back({0.0, chain.x[T], coilFrameAtTip(dep, chain, ds.twist)});
@@ -55,13 +55,15 @@ void poseAt(const Deployment& dep, const std::vector<Sample>& c, double s, Vec3&
 
 }  // namespace
 
-void slideDeployment(const Deployment& dep, const Model& model, State& state, DeploymentState& ds, double deployed,
+void slideDeployment(const Model& model, State& state, double deployed,
                      double twist) {
+  const Deployment& dep = *model.device;
+  const DeviceState& ds = state.device;
   if (ds.detached) return;
   RodState& chain = state.rods[dep.chainRod];
   const std::vector<Sample> before = coilCurve(dep, chain, ds);
   const double pushed = std::clamp(deployed, 0.0, dep.coilLength) - ds.deployed;
-  setDeployment(dep, model, state, ds, deployed, twist);
+  setDeployment(model, state, deployed, twist);
   // Only a push slides: the curve of a withdrawal or of a first node out
   // has nothing to slide along.
   if (!(pushed > 0) || before.size() < 2) return;

@@ -1,9 +1,14 @@
 #pragma once
 // A physical effect (gravity, buoyancy, drag, contact...) is a small class
-// behind this interface, registered by name in builtin_effects.cpp, so that
-// adding one is one new file plus one line. Parameter values live in the
-// Model (EffectUse), in SI, so an Effect object itself is stateless and shared.
+// behind this interface, registered by name at start-up with all the others
+// (effects/builtin.cpp), so that adding one is one new file plus one line.
+// Parameter values live in the Model (EffectUse), in SI, so an Effect object
+// itself is stateless and shared. An effect also says what it means to the
+// validation workbench (diagnosis()): which of its parameters a fit varies,
+// their values when off and typical, their plausible band, whether it
+// replaces the rigid clamp at the catheter tip.
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -53,6 +58,31 @@ struct RodForces {
   std::vector<NodeCoupling>* coupling = nullptr;
 };
 
+// What the workbench knows of a bench setup when it asks an effect how to
+// take part (the fluid's properties set buoyancy's and drag's values).
+struct SetupHint {
+  double mediumDensity = 1.2;        // kg/m^3
+  double mediumViscosity = 1.8e-5;   // Pa s
+};
+
+// One parameter a fit varies: its value meaning "effect off", a typical
+// value (the screening's finite difference reaches it), and the band of
+// physically plausible values (the prior), SI.
+struct FitSpec {
+  std::string_view param;
+  double off = 0, typical = 0;
+  double plausibleLow = 0, plausibleHigh = 0;
+};
+
+// How an effect takes part in validation: as a candidate missing effect
+// (`fit` non-empty, or a parameterless switch), with values implied by the
+// setup, and whether it releases the rigid clamp at the tip.
+struct Diagnosable {
+  std::vector<FitSpec> fit;
+  std::vector<std::pair<std::string_view, double>> fromSetup;  // parameter, SI value the setup implies
+  bool releasesClamp = false;
+};
+
 class Effect {
  public:
   virtual ~Effect() = default;
@@ -82,6 +112,10 @@ class Effect {
                                    std::span<const Vec3> /*dx*/) const {
     return 1.0;
   }
+  // How the validation workbench uses this effect; nullopt: not a candidate
+  // missing effect (gravity, which every model has; wall and coil-coil
+  // contact, which a bench in free fluid does not meet).
+  virtual std::optional<Diagnosable> diagnosis(const SetupHint&) const { return std::nullopt; }
 };
 
 // One effect switched into a model, with its parameter values (SI).

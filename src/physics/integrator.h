@@ -1,6 +1,8 @@
 #pragma once
 // Time stepping and static equilibrium. Both take a Model and a State and
-// change only the State; on failure the State is left as it was before.
+// change only the State. A refused step leaves the rods as they were before
+// it; a static solve that fails leaves the last converged load increment
+// (what a user wants to look at), and its report says so.
 #include <string>
 
 #include "physics/model.h"

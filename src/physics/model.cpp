@@ -5,6 +5,7 @@
 
 #include "physics/beam.h"
 #include "physics/contact/obstacle_tree.h"
+#include "physics/deployment.h"
 
 namespace coilsim {
 namespace {
@@ -78,6 +79,14 @@ RodModel compileRod(const RodDef& d) {
 }  // namespace
 
 Model compileModel(const ModelDef& def) {
+  if (def.device) {
+    ModelDef rods = def;
+    rods.device.reset();
+    Deployment device = addDeployment(*def.device, rods);
+    Model m = compileModel(rods);
+    m.device = std::move(device);
+    return m;
+  }
   if (def.rods.empty()) throw std::invalid_argument("model has no rod");
   if (!def.gravity.allFinite()) throw std::invalid_argument("gravity is not finite");
   if (!std::isfinite(def.timeStep) || !(def.timeStep > 0))

@@ -4,11 +4,14 @@
 // with compileModel() from a ModelDef; several States may share one Model.
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "physics/device.h"
 #include "physics/draw_data.h"
 #include "physics/effect.h"
+#include "physics/element.h"
 #include "physics/math.h"
 #include "physics/rest_shape.h"
 #include "physics/section.h"
@@ -51,21 +54,6 @@ struct RodDef {
   std::vector<NodalLoad> loads;
 };
 
-// Per-element constants of the co-rotational beam (see beam.h).
-struct BeamRest {
-  double length = 0;               // rest chord length L0
-  Quat nodeToElement;              // Q: rest element frame expressed in node a's frame
-  Quat restRelative;               // P: node b's rest frame in the rest element frame
-  Mat12 stiffness;                 // local 12x12 stiffness (Przemieniecki, Timoshenko)
-  // The few distinct entries of `stiffness` (its 3x3 blocks are diagonal or
-  // hold two off-diagonal terms), so the global tangent is a handful of
-  // outer products instead of twelve 3x3 triple products.
-  Vec3 axial;      // K(0,0), K(1,1), K(2,2): translational diagonal
-  Vec3 rotSelf;    // K(3,3), K(4,4), K(5,5): rotational diagonal
-  Vec3 rotCross;   // K(3,9), K(4,10), K(5,11): rotational coupling a-b
-  double shearY = 0, shearZ = 0;  // K(1,5) and -K(2,4): bending-shear coupling
-};
-
 struct RodModel {
   std::string name;
   RodRole role = RodRole::Coil;
@@ -104,6 +92,9 @@ struct ModelDef {
   HealthLimits health;
   std::vector<EffectUse> effects;    // gravity is one of them
   std::vector<Obstacle> obstacles;   // walls the rods may touch (contact effects read them)
+  // A coil deployed through a catheter: compileModel appends its rods (the
+  // chain, the detached coil, the drawn catheter) after `rods`.
+  std::optional<DeploymentDef> device;
 };
 
 struct Model {
@@ -116,11 +107,13 @@ struct Model {
   std::vector<EffectUse> effects;
   std::vector<Obstacle> obstacles;
   std::vector<std::shared_ptr<const ObstacleTree>> obstacleTrees;  // (obstacles) collision trees, built by compileModel
+  std::optional<Deployment> device;  // the deployment's constants, when the run has one
 };
 
-// Builds element constants, lumped masses and placed rest shapes.
-// Throws std::invalid_argument naming the rod and the quantity on a
-// non-positive or non-finite input, or a constraint/load on a missing node.
+// Builds element constants, lumped masses and placed rest shapes, and the
+// device's rods and constants (def.device). Throws std::invalid_argument
+// naming the rod (or the deployment) and the quantity on a non-positive or
+// non-finite input, or a constraint/load on a missing node.
 Model compileModel(const ModelDef& def);
 
 // The effect use called `name`, or nullptr.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "physics/deployment.h"
 #include "physics/model.h"
 
 namespace coilsim {
@@ -38,6 +39,7 @@ State makeState(const Model& model) {
     w.fixedValue.assign(n, Vec6::Zero());
     s.rods.push_back(std::move(r));
   }
+  if (model.device) resetDevice(model, s, model.device->initialDeployed, model.device->initialTwist);
   return s;
 }
 

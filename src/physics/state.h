@@ -37,14 +37,6 @@ struct RodWorkspace {
   std::vector<Vec6> fixedValue;     // (nnode) prescribed increments of constrained DOFs
 };
 
-// Lumped properties of one node as the step uses them.
-struct NodeProps {
-  double mass = 0;              // kg
-  Vec3 inertia = Vec3::Zero();  // rotational inertia in the material frame (t, d1, d2), kg m^2
-  double length = 0;            // length of rod the node stands for, m
-  double radius = 0;            // outer radius there (buoyancy, drag, contact), m
-};
-
 struct RodState {
   // The chain as it is now. Normally the Model's rod unchanged; a deployment
   // rewrites these as coil material slides out of the catheter (composite
@@ -80,6 +72,7 @@ struct StepStats {
 struct State {
   double time = 0;  // s
   std::vector<RodState> rods;
+  DeviceState device;  // the deployment's (Model::device), when the run has one
   StepStats stats;
   long blowups = 0;                   // steps refused because the result was not healthy
   long substepped = 0;                // steps that were healthy only in substeps (dynamics.cpp)
@@ -87,7 +80,8 @@ struct State {
 };
 
 // A State at rest in the model's rest shape, constraint targets at the rest
-// poses, every scratch array sized for the model.
+// poses, every scratch array sized for the model; with a device, the coil
+// deployed to its initial length and twist (resetDevice).
 State makeState(const Model& model);
 
 // Adds `message` to state.warnings unless it is there already.

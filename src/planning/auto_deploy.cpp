@@ -64,11 +64,12 @@ bool FeltTipForce::add(const Deployment& dep, const State& state, bool still, do
   return stillTime_ >= window_ - 0.5 * dt;
 }
 
-AutoDeployResult autoDeploy(const Deployment& dep, const Model& model, State& state, DeploymentState& ds,
-                            const AutoDeployOptions& o, const ContactForceSource& contacts) {
+AutoDeployResult autoDeploy(const Model& model, State& state, const AutoDeployOptions& o,
+                            const ContactForceSource& contacts) {
   using Kind = DeviceCommand::Kind;
   AutoDeployResult r;
-  DeploymentController controller;
+  const Deployment& dep = *model.device;
+  const DeviceState& ds = state.device;
   const double dt = model.timeStep;
   const double probe = 0.02;  // s the pusher rests to feel the resistance
   FeltTipForce feel(probe);
@@ -78,7 +79,7 @@ AutoDeployResult autoDeploy(const Deployment& dep, const Model& model, State& st
   int twistsHere = 0, pullBacksHere = 0;
   double progressMark = ds.deployed;  // deployed length at the last pull-back reset
   auto issue = [&](double t, const DeviceCommand& c) {
-    const std::string why = controller.command(dep, ds, c);
+    const std::string why = command(model, state, c);
     if (!why.empty()) r.log.push_back(sText(t) + ": " + why);
     else r.timeline.push_back({t, c});
     return why.empty();
@@ -93,7 +94,7 @@ AutoDeployResult autoDeploy(const Deployment& dep, const Model& model, State& st
   for (long s = 0; s < maxSteps; ++s) {
     const double t = double(s) * dt;  // exactly the time runTimeline applies commands at
     const bool fullyOut = ds.deployed >= dep.coilLength - 1e-12;
-    if (phase == Phase::Stroke && !controller.moving()) {
+    if (phase == Phase::Stroke && !ds.motion.moving()) {
       phase = Phase::Feel;
     } else if (phase == Phase::Feel && fullyOut && !ds.detached) {
       phase = Phase::Settle, phaseEnd = t + o.settle;
@@ -101,7 +102,7 @@ AutoDeployResult autoDeploy(const Deployment& dep, const Model& model, State& st
       phase = Phase::Pause, phaseEnd = t + o.pause;
     } else if (phase == Phase::Pause && t >= phaseEnd - 1e-12) {
       phase = Phase::Feel;
-    } else if (phase == Phase::PullBack && !controller.moving()) {
+    } else if (phase == Phase::PullBack && !ds.motion.moving()) {
       phase = Phase::Feel;
     } else if (phase == Phase::Settle && t >= phaseEnd - 1e-12) {
       issue(t, {Kind::Detach, 0, 0});
@@ -113,11 +114,10 @@ AutoDeployResult autoDeploy(const Deployment& dep, const Model& model, State& st
       return r;
     }
     const double before = ds.deployed, twistBefore = ds.twist;
-    controller.advance(dep, model, state, ds, dt);
-    for (const std::string& n : controller.notes) r.log.push_back(sText(t) + ": " + n);
-    controller.notes.clear();
+    const StepReport rep = advance(model, state);  // a shock at detach is split into substeps by step() itself
+    for (const std::string& n : state.device.notes) r.log.push_back(sText(t) + ": " + n);
+    state.device.notes.clear();
     const bool pusherMoved = ds.deployed != before || ds.twist != twistBefore;  // pushed, pulled or twisted
-    const StepReport rep = step(model, state);  // a shock at detach is split into substeps by step() itself
     ++r.steps;
     if (!rep.ok()) {
       r.ok = false;
@@ -125,7 +125,7 @@ AutoDeployResult autoDeploy(const Deployment& dep, const Model& model, State& st
       r.time = t, r.deployed = ds.deployed;
       return r;
     }
-    r.maxKickback = std::max(r.maxKickback, catheterTip(dep, state, ds).kickback);
+    r.maxKickback = std::max(r.maxKickback, catheterTip(model, state).kickback);
     r.maxWallPenetration = state.stats.maxWallPenetration;
     r.maxWallPenetrationOfRadius = state.stats.maxWallPenetrationOfRadius;
     if (contacts && contacts(model, state, forces)) {

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "physics/controller.h"
+#include "physics/run.h"
 #include "physics/deployment.h"
 #include "physics/model.h"
 #include "physics/state.h"
@@ -90,9 +90,9 @@ class FeltTipForce {
   double window_, stillTime_ = 0;
 };
 
-// Runs the deployment from the state's current configuration to detach (or
-// until the operator gives up, or maxTime).
-AutoDeployResult autoDeploy(const Deployment& dep, const Model& model, State& state, DeploymentState& ds,
-                            const AutoDeployOptions& options, const ContactForceSource& contacts = {});
+// Runs the model's deployment from the state's current configuration to
+// detach (or until the operator gives up, or maxTime).
+AutoDeployResult autoDeploy(const Model& model, State& state, const AutoDeployOptions& options,
+                            const ContactForceSource& contacts = {});
 
 }  // namespace coilsim::planning

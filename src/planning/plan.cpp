@@ -115,12 +115,17 @@ CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const C
       if (c.tipTiltDeg != 0)
         dep.catheter.direction = rotate(dep.catheter.direction.normalized(), dep.catheter.referenceNormal.normalized(),
                                         units::degToRad(c.tipTiltDeg));
-      io::CompiledScene compiled = io::compileSceneWithDeployment(spec);
-      // Coils placed before, after every rod of the scene and deployment, so their indices hold.
-      const size_t firstPlaced = compiled.model.rods.size();
-      for (const PlacedCoil& p : placed) compiled.model.rods.push_back(p.def);
-      addRunContacts(compiled.model, setup.sac);
-      r.model = compileModel(compiled.model);
+      ModelDef def = io::compileScene(spec);
+      // Coils placed before come after every rod of the scene and of this
+      // deployment, so the deployment's rod indices are those of a run
+      // without them: its rods are added here, not by compileModel.
+      const Deployment d = addDeployment(*def.device, def);
+      def.device.reset();
+      const size_t firstPlaced = def.rods.size();
+      for (const PlacedCoil& p : placed) def.rods.push_back(p.def);
+      addRunContacts(def, setup.sac);
+      r.model = compileModel(def);
+      r.model.device = d;
       r.state = makeState(r.model);
       for (size_t i = 0; i < placed.size(); ++i) {
         RodState& s = r.state.rods[firstPlaced + i];
@@ -131,12 +136,10 @@ CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const C
         std::fill(s.v.begin(), s.v.end(), Vec3::Zero());
         std::fill(s.w.begin(), s.w.end(), Vec3::Zero());
       }
-      const Deployment& d = *compiled.deployment;
       chainRod = d.chainRod, catheterNodes = d.tipNode;
-      DeploymentState ds = initDeployment(d, r.model, r.state, compiled.initialDeployed, compiled.initialTwist);
       setDrawnCatheterActive(d, r.state, false);
       AutoDeployResult one =
-          autoDeploy(d, r.model, r.state, ds, setup.deploy, contacts ? contacts : ContactForceSource(wallContactForces));
+          autoDeploy(r.model, r.state, setup.deploy, contacts ? contacts : ContactForceSource(wallContactForces));
       setDrawnCatheterActive(d, r.state, true);  // for the picture
       if (c.coils.size() > 1) {
         const std::string label = coil.name + ": ";
@@ -149,7 +152,7 @@ CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const C
       if (!goOn) break;
       // The placed coils move while the next one goes in: keep their poses, and add this one.
       for (size_t i = 0; i < placed.size(); ++i) placed[i].pose = r.state.rods[firstPlaced + i];
-      PlacedCoil now{compiled.model.rods[size_t(d.freeRod)], r.state.rods[size_t(d.freeRod)]};
+      PlacedCoil now{def.rods[size_t(d.freeRod)], r.state.rods[size_t(d.freeRod)]};
       now.def.name = coil.name + " (placed)";
       placed.push_back(std::move(now));
     }

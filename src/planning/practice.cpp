@@ -26,33 +26,30 @@ PracticeSession::PracticeSession(const PracticeCase& pc, const std::string& coil
   io::SceneSpec spec = pc.scene;
   io::applyCoil(*coil, pc.spacingMm, *spec.deployment);
   spec.deployment->initialDeployedMm = std::min(spec.deployment->initialDeployedMm, 0.5 * coil->lengthMm);
-  io::CompiledScene compiled;
   try {
-    compiled = io::compileSceneWithDeployment(spec);
-    addRunContacts(compiled.model, pc.sac);
-    model_ = compileModel(compiled.model);
+    ModelDef def = io::compileScene(spec);
+    addRunContacts(def, pc.sac);
+    model_ = compileModel(def);
   } catch (const io::InputError&) {
     throw;
   } catch (const std::exception& e) {
     throw io::InputError(pc.file + ": /scene: " + e.what());
   }
-  deployment_ = *compiled.deployment;
   state_ = makeState(model_);
-  ds_ = initDeployment(deployment_, model_, state_, compiled.initialDeployed, compiled.initialTwist);
-  setDrawnCatheterActive(deployment_, state_, false);
-  scorer_.emplace(pc, coilName, deployment_, model_.timeStep, contacts);
+  setDrawnCatheterActive(*model_.device, state_, false);
+  scorer_.emplace(pc, coilName, *model_.device, model_.timeStep, contacts);
 }
 
 std::string PracticeSession::command(const DeviceCommand& c) {
   // The numbers a replay of the recording will read, so it replays exactly.
   const DeviceCommand read = asRecorded(c);
-  const std::string why = controller_.command(deployment_, ds_, read);
+  const std::string why = coilsim::command(model_, state_, read);
   if (why.empty()) scorer_->commandAccepted(time(), commandJson({time(), c}), read);
   return why;
 }
 
 std::string PracticeSession::replayCommand(const DeviceCommand& c) {
-  const std::string why = controller_.command(deployment_, ds_, c);
+  const std::string why = coilsim::command(model_, state_, c);
   if (why.empty()) scorer_->commandAccepted(time(), commandJson({time(), c}), c);
   return why;
 }
@@ -61,17 +58,15 @@ void PracticeSession::setView(const std::string& view) { scorer_->viewChanged(ti
 
 bool PracticeSession::step() {
   if (!scorer_->scoring()) return false;
-  scorer_->beforeDevice(ds_);
-  controller_.advance(deployment_, model_, state_, ds_, model_.timeStep);
-  controller_.notes.clear();
-  scorer_->afterDevice(state_, ds_);
-  const StepReport rep = coilsim::step(model_, state_);
+  scorer_->beforeStep(state_);
+  const StepReport rep = coilsim::advance(model_, state_);
+  state_.device.notes.clear();
   ++steps_;
-  scorer_->afterStep(model_, state_, ds_, rep.ok(), rep.message);
+  scorer_->afterStep(model_, state_, rep.ok(), rep.message);
   return rep.ok();
 }
 
-ScoreSheet PracticeSession::finish() { return scorer_->finish(model_, state_, ds_); }
+ScoreSheet PracticeSession::finish() { return scorer_->finish(model_, state_); }
 
 ordered_json PracticeSession::recording() const { return scorer_->recording(time()); }
 

@@ -18,7 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "physics/controller.h"
+#include "physics/run.h"
 #include "physics/deployment.h"
 #include "physics/model.h"
 #include "physics/state.h"
@@ -51,8 +51,8 @@ class PracticeSession {
 
   const Model& model() const { return model_; }
   const State& state() const { return state_; }
-  const Deployment& deployment() const { return deployment_; }
-  const DeploymentState& deploymentState() const { return ds_; }
+  const Deployment& deployment() const { return *model_.device; }
+  const DeviceState& deploymentState() const { return state_.device; }
   long steps() const { return steps_; }
   const std::string& view() const { return scorer_->view(); }  // the view looked through now
   double time() const { return double(steps_) * model_.timeStep; }
@@ -64,9 +64,6 @@ class PracticeSession {
  private:
   Model model_;
   State state_;
-  Deployment deployment_;
-  DeploymentState ds_;
-  DeploymentController controller_;
   long steps_ = 0;
   std::optional<SessionScorer> scorer_;  // built once the deployment is known
 };

@@ -110,8 +110,9 @@ void SessionScorer::viewChanged(double t, const std::string& view) {
   views_.emplace_back(t, view);
 }
 
-void SessionScorer::beforeDevice(const DeploymentState& ds) {
+void SessionScorer::beforeStep(const State& state) {
   if (!score_.ok) return;
+  const DeviceState& ds = state.device;
   ++steps_;
   // Counted in steps so the time is exactly steps x dt, as a reader would compute it.
   if (fluoroscopic(view_)) score_.fluoroscopyTime = double(++fluoroSteps_) * dt_;
@@ -120,20 +121,19 @@ void SessionScorer::beforeDevice(const DeploymentState& ds) {
   twistBefore_ = ds.twist;
 }
 
-void SessionScorer::afterDevice(const State& state, const DeploymentState& ds) {
-  if (!score_.ok || !ds.detached || wasDetached_) return;
-  score_.detached = true;
-  const Vec3& tip = state.rods[size_t(dep_.chainRod)].x[size_t(dep_.tipNode)];
-  score_.detachInSac = sac_.neck.signedDistance(tip) >= 0 && insideSurface(sac_, tip);
-}
 
 SacMetrics SessionScorer::measure(const Model& model, const State& state) const {
   return measureSac(sac_, sacVolume_, neck_, coilLines(model, state, dep_.chainRod, dep_.tipNode));
 }
 
-void SessionScorer::afterStep(const Model& model, const State& state, const DeploymentState& ds, bool ok,
-                              const std::string& why) {
+void SessionScorer::afterStep(const Model& model, const State& state, bool ok, const std::string& why) {
   if (!score_.ok) return;
+  const DeviceState& ds = state.device;
+  if (ds.detached && !wasDetached_) {
+    score_.detached = true;
+    const Vec3& tip = ds.releasedAt;
+    score_.detachInSac = sac_.neck.signedDistance(tip) >= 0 && insideSurface(sac_, tip);
+  }
   if (!ok) {
     score_.ok = false;
     score_.error = "step refused at t = " + std::to_string(time()) + " s: " + why;
@@ -156,10 +156,10 @@ void SessionScorer::afterStep(const Model& model, const State& state, const Depl
   }
 }
 
-ScoreSheet SessionScorer::finish(const Model& model, const State& state, const DeploymentState& ds) const {
+ScoreSheet SessionScorer::finish(const Model& model, const State& state) const {
   ScoreSheet s = score_;
   s.time = time();
-  s.coilLengthPlaced = ds.deployed;
+  s.coilLengthPlaced = state.device.deployed;
   const SacMetrics m = measure(model, state);
   s.packingDensity = m.packingDensity;
   s.neckCoverage = m.neckCoverage;

@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "physics/controller.h"
+#include "physics/run.h"
 #include "physics/deployment.h"
 #include "physics/model.h"
 #include "physics/state.h"
@@ -68,14 +68,13 @@ class SessionScorer {
   void commandAccepted(double t, const nlohmann::ordered_json& recorded, const DeviceCommand& applied);
   void viewChanged(double t, const std::string& view);
 
-  // Around every step, in this order: before the device moves, after it
-  // moved, after the step. A refused step ends the scoring (nothing later counts).
-  void beforeDevice(const DeploymentState& ds);
-  void afterDevice(const State& state, const DeploymentState& ds);
-  void afterStep(const Model& model, const State& state, const DeploymentState& ds, bool ok, const std::string& why);
+  // Around every advance (the device moves, then the physics steps). A
+  // refused step ends the scoring (nothing later counts).
+  void beforeStep(const State& state);
+  void afterStep(const Model& model, const State& state, bool ok, const std::string& why);
 
   // The sheet at the end (final metrics, goal check).
-  ScoreSheet finish(const Model& model, const State& state, const DeploymentState& ds) const;
+  ScoreSheet finish(const Model& model, const State& state) const;
   // The recording: {"format": "coilsim-session/1", "case", "coil", "end_s",
   // "timeline": <coilsim-timeline/1 document>, "views": [{"t_s", "view"}]}.
   nlohmann::ordered_json recording(double end) const;

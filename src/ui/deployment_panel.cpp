@@ -28,7 +28,7 @@ DeviceCommand make(DeviceCommand::Kind kind, double rate, double amount = 0) {
 
 void readOuts(const Session& session) {
   const Deployment& dep = *session.deployment();
-  const DeploymentState& ds = session.deploymentState();
+  const DeviceState& ds = session.deploymentState();
   char overlay[64];
   std::snprintf(overlay, sizeof overlay, "%.1f of %.1f mm out", units::mToMm(ds.deployed), units::mToMm(dep.coilLength));
   ImGui::ProgressBar(float(dep.coilLength > 0 ? ds.deployed / dep.coilLength : 0.0), ImVec2(-1.0f, 0.0f), overlay);
@@ -41,7 +41,7 @@ void readOuts(const Session& session) {
     ImGui::SameLine();
     ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "  detached");
   }
-  if (session.controller().moving()) {
+  if (ds.motion.moving()) {
     ImGui::SameLine();
     ImGui::TextDisabled("  moving");
   }

@@ -30,7 +30,7 @@ bool renderOffscreen(const Model& model, const State& state, const ViewerOptions
   if (!imgui.init(nullptr, error)) return false;
 
   Session session(model, state, options.addDrawData);
-  if (options.deployment) session.attachDeployment(*options.deployment);
+  session.setTimeline(options.timeline);
   Views views(*mode);
   PanelContext panel;
   panel.sceneName = options.scenePath;

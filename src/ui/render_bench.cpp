@@ -36,7 +36,7 @@ bool benchRender(const Model& model, const State& state, const RenderBenchOption
   result.gl = render::glDescription();
 
   Session session(model, state, o.addDrawData);
-  if (o.deployment) session.attachDeployment(*o.deployment);
+  session.setTimeline(o.timeline);
   Views views;
   PanelContext panel;
   panel.interactive = false;

@@ -23,7 +23,7 @@ struct RenderBenchOptions {
   DrawDataHook addDrawData;        // optional vessel meshes / markers, as in ViewerOptions
   // Optional deployment; its timeline drives the stepping measurement (e.g.
   // a push from t = 0, so physics slides the coil as in use).
-  std::optional<DeploymentSetup> deployment;
+  std::vector<TimedCommand> timeline;
 };
 
 struct RenderBenchResult {

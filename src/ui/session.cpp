@@ -22,14 +22,12 @@ void Session::setPlaying(bool playing) {
   playing_ = playing;
 }
 
-void Session::attachDeployment(const DeploymentSetup& setup) {
-  deploymentSetup_ = setup;
+void Session::setTimeline(std::vector<TimedCommand> timeline) {
+  timeline_ = std::move(timeline);
   restartDevice();
 }
 
 void Session::restartDevice() {
-  deploymentState_ = deploymentSetup_->initial;
-  controller_ = DeploymentController();
   timelineNext_ = 0;
   scriptNext_ = 0;
   deviceSteps_ = 0;
@@ -41,9 +39,7 @@ void Session::replace(const Model& model, const State& state, DrawDataHook hook)
   initial_ = state;
   state_ = state;
   hook_ = std::move(hook);
-  deploymentSetup_.reset();
-  deploymentState_ = DeploymentState();
-  controller_ = DeploymentController();
+  timeline_.clear();
   timelineNext_ = scriptNext_ = 0;
   deviceSteps_ = 0;
   deviceMessages_.clear();
@@ -80,14 +76,14 @@ void Session::note(const std::string& message) {
 }
 
 std::string Session::command(const DeviceCommand& c) {
-  if (!deploymentSetup_) {
+  if (!model_.device) {
     const std::string why = "refused: this scene has no deployment (no coil in a catheter to drive)";
     note(why);
     return why;
   }
   // The observer (a recorder) may round the command to what its file holds.
   const DeviceCommand applied = observer_ ? observer_->adjust(c) : c;
-  const std::string why = controller_.command(deploymentSetup_->deployment, deploymentState_, applied);
+  const std::string why = coilsim::command(model_, state_, applied);
   if (!why.empty()) note(why);
   else if (observer_) observer_->accepted(deviceTime(), c, applied);
   return why;
@@ -95,10 +91,9 @@ std::string Session::command(const DeviceCommand& c) {
 
 // What runTimeline does before each step, in the same order, so that a
 // window run and a headless run of one timeline reach the same state.
-void Session::driveDevice() {
-  if (!deploymentSetup_) return;
-  const Deployment& dep = deploymentSetup_->deployment;
-  const std::vector<TimedCommand>& timeline = deploymentSetup_->timeline;
+void Session::giveInputs() {
+  if (!model_.device) return;
+  const std::vector<TimedCommand>& timeline = timeline_;
   const double dt = model_.timeStep;
   const double t = double(deviceSteps_) * dt;
   // Scripted user inputs, as if typed at their time (the same rule as timelines).
@@ -108,24 +103,22 @@ void Session::driveDevice() {
     else setView(in.view);
   }
   while (timelineNext_ < timeline.size() && timeline[timelineNext_].time <= t + 1e-9 * dt) {
-    const std::string why = controller_.command(dep, deploymentState_, timeline[timelineNext_].command);
+    const std::string why = coilsim::command(model_, state_, timeline[timelineNext_].command);
     if (!why.empty()) note("timeline /commands/" + std::to_string(timelineNext_) + ": " + why);
     ++timelineNext_;
   }
-  if (observer_) observer_->beforeDevice(deploymentState_);
-  controller_.advance(dep, model_, state_, deploymentState_, dt);
-  if (observer_) observer_->afterDevice(state_, deploymentState_);
-  for (const std::string& n : controller_.notes) note(n);
-  controller_.notes.clear();
 }
 
 bool Session::stepAndCheck() {
-  // The device moves between steps; a refused step restores the poses but
-  // not the slid coil, exactly as in runTimeline, which stops there too.
-  driveDevice();
+  // A refused step restores the poses but not the slid coil, exactly as in
+  // runTimeline, which stops there too.
+  giveInputs();
+  if (observer_) observer_->beforeStep(state_);
   ++deviceSteps_;
-  const StepReport r = step(model_, state_);
-  if (observer_) observer_->afterStep(model_, state_, deploymentState_, r.ok(), r.message);
+  const StepReport r = coilsim::advance(model_, state_);
+  for (const std::string& n : state_.device.notes) note(n);
+  state_.device.notes.clear();
+  if (observer_) observer_->afterStep(model_, state_, r.ok(), r.message);
   if (!r.ok()) {
     // step() restored the state; stepping again would fail the same way.
     haltMessage_ = "step refused at t = " + std::to_string(state_.time) + " s: " + r.message;
@@ -157,7 +150,7 @@ long Session::stepMany(int count) {
 
 void Session::reset() {
   state_ = initial_;
-  if (deploymentSetup_) restartDevice();
+  restartDevice();
   if (observer_) {
     observer_->restarted();
     observer_->viewChanged(0.0, view_);

@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "physics/controller.h"
 #include "physics/deployment.h"
 #include "physics/draw_data.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
+#include "physics/run.h"
 #include "physics/state.h"
 #include "ui/contact_overlay.h"
 #include "ui/realtime.h"
@@ -24,16 +24,6 @@ namespace coilsim::ui {
 
 // Adds what the core does not fill (vessel meshes, markers) to draw data.
 using DrawDataHook = std::function<void(const Model&, const State&, DrawData&)>;
-
-// A coil deployment the session drives: its constants, its state at the
-// start (reset returns there) and an optional timeline of device commands,
-// played exactly as runTimeline plays it headless (a command starts at the
-// first step whose start time, step index * dt, is at or after its time).
-struct DeploymentSetup {
-  Deployment deployment;
-  DeploymentState initial;
-  std::vector<TimedCommand> timeline;
-};
 
 // One scripted user input (tests under Xvfb drive the window with a list of
 // them): a device command or a view switch ("3d", "xray", "biplane"), given
@@ -59,14 +49,13 @@ class RunObserver {
   virtual void accepted(double /*t*/, const DeviceCommand& /*given*/, const DeviceCommand& /*applied*/) {}
   // The user looks through `view` from session time `t` on (also once when attached).
   virtual void viewChanged(double /*t*/, const std::string& /*view*/) {}
-  // Around every step: before the device moves, after it moved, after the step.
-  virtual void beforeDevice(const DeploymentState&) {}
-  virtual void afterDevice(const State&, const DeploymentState&) {}
-  virtual void afterStep(const Model&, const State&, const DeploymentState&, bool /*ok*/, const std::string& /*why*/) {}
+  // Around every advance (the device moves, then the physics steps).
+  virtual void beforeStep(const State&) {}
+  virtual void afterStep(const Model&, const State&, bool /*ok*/, const std::string& /*why*/) {}
   // The session went back to its start (Reset); the inputs so far no longer count.
   virtual void restarted() {}
   // The window closes on this model and state (runWindow calls it).
-  virtual void closed(const Model&, const State&, const DeploymentState&) {}
+  virtual void closed(const Model&, const State&) {}
 };
 
 class Session {
@@ -95,27 +84,28 @@ class Session {
   void setStopTime(double seconds) { stopTime_ = seconds; }
   bool reachedStopTime() const;
 
-  // The deployment (push, pull, twist, detach, retract), if the scene has
-  // one. Call before the first step.
-  void attachDeployment(const DeploymentSetup& setup);
-  bool hasDeployment() const { return deploymentSetup_.has_value(); }
-  const Deployment* deployment() const { return deploymentSetup_ ? &deploymentSetup_->deployment : nullptr; }
-  const DeploymentState& deploymentState() const { return deploymentState_; }
-  const DeploymentController& controller() const { return controller_; }
+  // The model's device (push, pull, twist, detach, retract), if it has one.
+  bool hasDeployment() const { return model_.device.has_value(); }
+  const Deployment* deployment() const { return model_.device ? &*model_.device : nullptr; }
+  const DeviceState& deploymentState() const { return state_.device; }
+  // Device commands played exactly as runTimeline plays them headless (a
+  // command starts at the first step whose start time, step index * dt, is
+  // at or after its time). Call before the first step.
+  void setTimeline(std::vector<TimedCommand> timeline);
   // Starts a device command now (it acts from the next step on). Returns ""
-  // or the controller's reason for refusing it; refusals also go to the
-  // message list. Without a deployment every command is refused.
+  // or the reason for refusing it; refusals also go to the message list.
+  // Without a deployment every command is refused.
   std::string command(const DeviceCommand& command);
   // Refusals and limits reached ("the coil is fully deployed"), newest last,
   // each with the simulated time; at most the last 8.
   const std::deque<std::string>& deviceMessages() const { return deviceMessages_; }
   // Timeline commands already started.
   size_t timelineCursor() const { return timelineNext_; }
-  size_t timelineSize() const { return deploymentSetup_ ? deploymentSetup_->timeline.size() : 0; }
+  size_t timelineSize() const { return timeline_.size(); }
 
   // Replaces the model, state and draw hook (a coil or catheter chosen in
   // the panel): the session starts again from `state`, paused, with no
-  // deployment until attachDeployment. The observer and the view stay.
+  // timeline. The observer and the view stay.
   void replace(const Model& model, const State& state, DrawDataHook hook);
 
   // Who records the inputs and steps (may be null). It is told the current view at once.
@@ -158,7 +148,7 @@ class Session {
 
  private:
   bool stepAndCheck();
-  void driveDevice();
+  void giveInputs();
   void restartDevice();
   void note(const std::string& message);
 
@@ -173,9 +163,7 @@ class Session {
   long steps_ = 0;
   double stopTime_ = -1;
   std::string haltMessage_;
-  std::optional<DeploymentSetup> deploymentSetup_;
-  DeploymentState deploymentState_;
-  DeploymentController controller_;
+  std::vector<TimedCommand> timeline_;
   size_t timelineNext_ = 0;
   long deviceSteps_ = 0;  // steps since the start, the timeline's clock
   std::deque<std::string> deviceMessages_;

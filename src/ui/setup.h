@@ -17,12 +17,11 @@
 
 namespace coilsim::ui {
 
-// What the window runs after a choice: model, state, deployment, and what
-// goes with them (draw hook, read-outs, input observer).
+// What the window runs after a choice: model (with its device), state, and
+// what goes with them (draw hook, read-outs, input observer).
 struct SceneSetup {
   Model model;
   State state;
-  std::optional<DeploymentSetup> deployment;
   DrawDataHook draw;
   ReadoutHook readouts;
   std::shared_ptr<RunObserver> observer;

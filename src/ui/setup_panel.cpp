@@ -49,7 +49,6 @@ bool applySetup(SetupChoices& choices, int coil, int catheter, Session& session,
     return false;
   }
   session.replace(setup.model, setup.state, setup.draw);
-  if (setup.deployment) session.attachDeployment(*setup.deployment);
   session.setObserver(setup.observer);
   panel.readouts = setup.readouts;
   panel.device.confirmDetach = false;

@@ -29,10 +29,9 @@ struct ViewerOptions {
   // Optional: adds to the draw data what the core does not fill (vessel
   // meshes, contact or validation markers), called whenever the state changes.
   std::function<void(const Model&, const State&, DrawData&)> addDrawData;
-  // The scene's coil deployment, driven from the panel, keys and gamepad,
-  // and by its timeline (played as `coilsim run --headless` plays it). Its
-  // `initial` must match the State passed in (after initDeployment).
-  std::optional<DeploymentSetup> deployment;
+  // Device commands at their times, played as `coilsim run --headless`
+  // plays them, besides the panel, keys and gamepad (model with a device only).
+  std::vector<TimedCommand> timeline;
   // Optional live read-outs in the panel (planning: packing, protrusion, wall-force warnings).
   ReadoutHook readouts;
   // Window: coil and catheter choice in the panel, built by the app.
@@ -43,18 +42,14 @@ struct ViewerOptions {
   std::vector<ScriptedInput> script;
   bool xrayOnly = false;        // window: no 3D view (practice in the X-ray views only)
   std::string effectsLocked;    // window: why the effect switches are fixed (practice: the case's physics)
-  // Set by runWindow on return (when not null): the deployment's state, the
-  // model and the deployment when the window closed (a coil or catheter
-  // chosen in the panel replaces the ones passed in).
-  DeploymentState* finalDeployment = nullptr;
-  Model* finalModel = nullptr;
-  std::optional<Deployment>* finalDeploymentSetup = nullptr;
 };
 
 // Opens the window and runs the real-time loop until the user closes it (or
-// runSeconds of simulated time have passed). Returns a process exit code;
-// prints a clear message and returns non-zero if no display or GL 3.3 is available.
-int runWindow(const Model& model, State& state, const ViewerOptions& options);
+// runSeconds of simulated time have passed); `model` and `state` are then
+// the run as it closed (a coil or catheter chosen in the panel replaces the
+// model). Returns a process exit code; prints a clear message and returns
+// non-zero, changing nothing, if no display or GL 3.3 is available.
+int runWindow(Model& model, State& state, const ViewerOptions& options);
 
 // Renders the current state once through OSMesa into options.screenshotPath.
 // Returns false and sets `error` (naming the path or the GL problem) on failure.

@@ -36,7 +36,7 @@ bool writeWindowShot(int width, int height, const std::string& path) {
 
 }  // namespace
 
-int runWindow(const Model& model, State& state, const ViewerOptions& options) {
+int runWindow(Model& model, State& state, const ViewerOptions& options) {
   const auto mode = render::parseViewMode(options.view);
   if (!mode) {
     std::fprintf(stderr, "coilsim: unknown view '%s' (expected 3d, xray or biplane)\n", options.view.c_str());
@@ -61,7 +61,7 @@ int runWindow(const Model& model, State& state, const ViewerOptions& options) {
   }
 
   Session session(model, state, options.addDrawData);
-  if (options.deployment) session.attachDeployment(*options.deployment);
+  session.setTimeline(options.timeline);
   Views views(*mode);
   views.setXrayOnly(options.xrayOnly);
   session.setView(render::viewModeName(views.mode()));
@@ -157,12 +157,9 @@ int runWindow(const Model& model, State& state, const ViewerOptions& options) {
       exitCode = 1;
     backend->present();
   }
+  model = session.model();
   state = session.state();
-  if (options.finalDeployment && session.hasDeployment()) *options.finalDeployment = session.deploymentState();
-  if (options.finalModel) *options.finalModel = session.model();
-  if (options.finalDeploymentSetup)
-    *options.finalDeploymentSetup = session.deployment() ? std::optional<Deployment>(*session.deployment()) : std::nullopt;
-  if (session.observer()) session.observer()->closed(session.model(), session.state(), session.deploymentState());
+  if (session.observer()) session.observer()->closed(session.model(), session.state());
   return exitCode;
 }
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "validation/effects.h"
+#include "validation/params.h"
 
 namespace coilsim::validation {
 namespace {
@@ -31,35 +31,19 @@ constexpr double kMinExplained = 0.25;
 }  // namespace
 
 Candidate candidateFor(const std::string& effect, const Measurement& m) {
-  ensureValidationEffects();
   Candidate c;
   c.effect = effect;
-  const double rad = M_PI / 180.0;
-  if (effect == "buoyancy") {
-    c.params = {"buoyancy.medium_density_g_cm3"};
-    c.offValue = {0.0};
-    c.typicalValue = {std::max(m.mediumDensity, 1000.0)};
-  } else if (effect == "drag") {
-    c.params = {"drag.viscosity_pa_s"};
-    c.offValue = {0.0};
-    c.typicalValue = {std::max(m.mediumViscosity, 0.01)};
-  } else if (effect == "gravity_tilt") {
-    c.params = {"gravity_tilt.tilt_a_deg", "gravity_tilt.tilt_b_deg"};
-    c.offValue = {0.0, 0.0};
-    c.typicalValue = {1.0 * rad, 1.0 * rad};
-  } else if (effect == "catheter_compliance") {
-    // Off is the stiffest segment the bounds allow (rigid to well below a micron).
-    c.params = {"catheter_compliance.bending_stiffness_n_mm2"};
-    c.offValue = {1e6 * 1e-6};
-    c.typicalValue = {10.0 * 1e-6};
-  } else if (effect == "self_contact") {
-    // Its magnitude is where loops touch: at 0 they pass through each other
-    // (off), at 1 the wire's own diameter. (Its penalty stiffness only sets
-    // how far they press in: well under a micrometre.)
-    c.params = {"self_contact.contact_radius_scale"};
-    c.offValue = {0.0};
-    c.typicalValue = {1.0};
-  } else if (const Effect* e = EffectRegistry::global().find(effect); e && !e->params().empty()) {
+  const Effect* e = EffectRegistry::global().find(effect);
+  if (!e) return c;
+  const std::optional<Diagnosable> d = e->diagnosis(setupHint(m));
+  if (d) {
+    for (const FitSpec& f : d->fit) {
+      c.params.push_back(effect + "." + std::string(f.param));
+      c.offValue.push_back(f.off);
+      c.typicalValue.push_back(f.typical);
+    }
+  } else if (!e->params().empty()) {
+    // An effect that says nothing of diagnosis: its first parameter from 0 (off) to its default.
     const ParamSpec& s = e->params()[0];
     c.params = {effect + "." + std::string(s.name)};
     c.offValue = {0.0};
@@ -70,10 +54,9 @@ Candidate candidateFor(const std::string& effect, const Measurement& m) {
 }
 
 std::vector<Candidate> defaultCandidates(const Measurement& m) {
-  ensureValidationEffects();
   std::vector<Candidate> out;
-  for (const char* e : {"buoyancy", "drag", "gravity_tilt", "catheter_compliance", "self_contact"})
-    if (EffectRegistry::global().find(e)) out.push_back(candidateFor(e, m));
+  for (const Effect* e : EffectRegistry::global().all())
+    if (e->diagnosis(setupHint(m))) out.push_back(candidateFor(std::string(e->name()), m));
   return out;
 }
 

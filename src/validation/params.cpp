@@ -2,7 +2,6 @@
 
 #include <stdexcept>
 
-#include "validation/effects.h"
 
 namespace coilsim::validation {
 namespace {
@@ -71,12 +70,18 @@ void setParam(ModelParams& p, const std::string& name, double v) {
   }
 }
 
+SetupHint setupHint(const Measurement& m) { return {m.mediumDensity, m.mediumViscosity}; }
+
 EffectUse effectFromFile(const std::string& name, const Measurement& m) {
-  ensureValidationEffects();
   EffectUse u = EffectRegistry::global().use(name);
-  if (name == "buoyancy") u.set("medium_density_g_cm3", m.mediumDensity);
-  if (name == "drag") u.set("viscosity_pa_s", m.mediumViscosity);
+  if (const std::optional<Diagnosable> d = u.effect->diagnosis(setupHint(m)))
+    for (const auto& [param, value] : d->fromSetup) u.set(param, value);
   return u;
+}
+
+bool releasesClamp(const EffectUse& use) {
+  const std::optional<Diagnosable> d = use.effect ? use.effect->diagnosis({}) : std::nullopt;
+  return d && d->releasesClamp;
 }
 
 std::vector<std::string> splitList(const std::string& list) {

@@ -26,11 +26,18 @@ std::optional<FitParam> describeParam(const std::string& name, const ModelParams
 double getParam(const ModelParams& p, const std::string& name);
 void setParam(ModelParams& p, const std::string& name, double si);
 
+// What an effect may read of the measurement's setup (the medium).
+SetupHint setupHint(const Measurement& m);
+
 // The effect `name` switched on with the values the measurement implies
-// (buoyancy: the medium's density; drag: its viscosity), otherwise its
-// defaults. Throws std::invalid_argument naming an unknown effect and
-// listing the known ones.
+// (Diagnosable::fromSetup: buoyancy the medium's density, drag its
+// viscosity), otherwise its defaults. Throws std::invalid_argument naming
+// an unknown effect and listing the known ones.
 EffectUse effectFromFile(const std::string& name, const Measurement& m);
+
+// True for an effect that replaces the rigid clamp at the tip by its own
+// spring (Diagnosable::releasesClamp): the model builder then frees the tip node.
+bool releasesClamp(const EffectUse& use);
 
 // "a,b,c" -> {"a", "b", "c"} (empty items dropped).
 std::vector<std::string> splitList(const std::string& list);

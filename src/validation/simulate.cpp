@@ -5,15 +5,16 @@
 #include <stdexcept>
 
 #include "physics/deployment.h"
-#include "physics/integrator.h"
-#include "validation/effects.h"
+#include "physics/run.h"
+#include "validation/params.h"
 
 namespace coilsim::validation {
 namespace {
 
+// The model of a measurement: its coil deployed from the file's catheter tip.
 struct Built {
   Model model;
-  Deployment dep;
+  const Deployment& dep() const { return *model.device; }
 };
 
 Built build(const Measurement& m, const ModelParams& p, int beams, double timeStep) {
@@ -36,14 +37,10 @@ Built build(const Measurement& m, const ModelParams& p, int beams, double timeSt
   d.coilSection = circularSection(m.coil.wireRadius, p.poissonRatio);
   d.tip = m.tip;
   d.maxPushSpeed = 1e9, d.maxTwistRate = 1e9;  // the file's history is what happened
-  Built b;
-  b.dep = addDeployment(d, def);
-  // A compliant catheter: the tip node hangs on the catheter_compliance
-  // spring instead of the rigid clamp (the constraint stays, holding no DOF,
-  // so the rod still counts as held for the static solver).
-  if (compliant) def.rods[b.dep.chainRod].constraints[0].mask = kFreeDofs;
-  b.model = compileModel(def);
-  return b;
+  // A compliant catheter: the tip node hangs on the catheter_compliance spring instead of the rigid clamp.
+  d.tipClamped = !compliant;
+  def.device = d;
+  return {compileModel(def)};
 }
 
 StaticOptions staticOptions() {
@@ -61,19 +58,18 @@ StaticReport solveWithEffects(const Built& b, State& s) { return solveStatic(b.m
 
 // Pushes from the state's current deployed length to `target` in increments
 // of at most `step`, an equilibrium after each; halves the increment on failure.
-std::string pushStatic(const Built& b, State& s, DeploymentState& ds, double target, double twist, double step) {
+std::string pushStatic(const Built& b, State& s, double target, double twist, double step) {
   double inc = step;
-  while (ds.deployed < target - 1e-12) {
-    const double next = std::min(target, ds.deployed + inc);
+  while (s.device.deployed < target - 1e-12) {
+    const double next = std::min(target, s.device.deployed + inc);
     const State saved = s;
-    const DeploymentState savedDs = ds;
-    slideDeployment(b.dep, b.model, s, ds, next, twist);
+    slideDeployment(b.model, s, next, twist);
     const StaticReport r = solveWithEffects(b, s);
     if (r.converged) {
       inc = std::min(step, inc * 2);
       continue;
     }
-    s = saved, ds = savedDs;
+    s = saved;
     inc *= 0.5;
     if (inc < 1e-3 * step)
       return "static equilibrium not reached while pushing to " + std::to_string(next * 1e3) + " mm: " + r.message;
@@ -93,15 +89,16 @@ void historyAt(const Stage& st, double t, double& l, double& tw) {
   tw = h[k - 1].twist + f * (h[k].twist - h[k - 1].twist);
 }
 
-StageSim collect(const Built& b, const State& s, const DeploymentState& ds) {
+StageSim collect(const Built& b, const State& s) {
   StageSim out;
-  const RodState& chain = s.rods[b.dep.chainRod];
+  const DeviceState& ds = s.device;
+  const RodState& chain = s.rods[b.dep().chainRod];
   out.ok = true;
   for (int i = 0; i < chain.activeNodes; ++i) {
     out.x.push_back(chain.x[i]);
     // Node i >= 1 is coil material node j = k + i - 1 at u_j = L - j h; s = l - u_j.
     const int j = ds.firstOutside + i - 1;
-    out.s.push_back(i == 0 ? 0.0 : ds.deployed - (b.dep.coilLength - j * b.dep.spacing));
+    out.s.push_back(i == 0 ? 0.0 : ds.deployed - (b.dep().coilLength - j * b.dep().spacing));
     if (!chain.x[i].allFinite()) out.ok = false, out.message = "non-finite node position";
   }
   return out;
@@ -150,7 +147,6 @@ StageSimulator::StageSimulator(const Measurement& m, const SimOptions& o) : m_(m
 }
 
 std::vector<StageSim> StageSimulator::run(const ModelParams& p, bool warmStart) {
-  ensureValidationEffects();
   std::vector<StageSim> out(m_.stages.size());
   Built b;
   try {
@@ -167,41 +163,40 @@ std::vector<StageSim> StageSimulator::run(const ModelParams& p, bool warmStart) 
     return A.twist != C.twist ? A.twist < C.twist : A.deployed < C.deployed;
   });
   State s = makeState(b.model);
-  DeploymentState ds;
-  bool pushing = false;  // s holds a static continuation at ds
+  bool pushing = false;  // s holds a static continuation
   for (const size_t i : order) {
     const Stage& st = m_.stages[i];
     if (st.dynamic()) continue;
     Cache& c = cache_[i];
     if (warmStart && c.valid) {
       State w = makeState(b.model);
-      DeploymentState wd = initDeployment(b.dep, b.model, w, st.deployed, st.twist);
-      RodState& chain = w.rods[b.dep.chainRod];
+      resetDevice(b.model, w, st.deployed, st.twist);
+      RodState& chain = w.rods[b.dep().chainRod];
       if (int(c.x.size()) == chain.activeNodes) {
         std::copy(c.x.begin(), c.x.end(), chain.x.begin());
         std::copy(c.q.begin(), c.q.end(), chain.q.begin());
         const StaticReport r = solveWithEffects(b, w);
         if (r.converged) {
-          out[i] = collect(b, w, wd);
+          out[i] = collect(b, w);
           c.x.assign(chain.x.begin(), chain.x.begin() + chain.activeNodes);
           c.q.assign(chain.q.begin(), chain.q.begin() + chain.activeNodes);
           continue;
         }
       }
     }
-    if (!pushing || ds.twist != st.twist || ds.deployed > st.deployed) {
+    if (!pushing || s.device.twist != st.twist || s.device.deployed > st.deployed) {
       s = makeState(b.model);
-      ds = initDeployment(b.dep, b.model, s, 0.0, st.twist);
+      resetDevice(b.model, s, 0.0, st.twist);
       pushing = true;
     }
-    const std::string err = pushStatic(b, s, ds, st.deployed, st.twist, options_.pushIncrement);
+    const std::string err = pushStatic(b, s, st.deployed, st.twist, options_.pushIncrement);
     if (!err.empty()) {
       out[i].message = err;
       pushing = false;
       continue;
     }
-    out[i] = collect(b, s, ds);
-    const RodState& chain = s.rods[b.dep.chainRod];
+    out[i] = collect(b, s);
+    const RodState& chain = s.rods[b.dep().chainRod];
     c.valid = true;
     c.x.assign(chain.x.begin(), chain.x.begin() + chain.activeNodes);
     c.q.assign(chain.q.begin(), chain.q.begin() + chain.activeNodes);
@@ -212,21 +207,22 @@ std::vector<StageSim> StageSimulator::run(const ModelParams& p, bool warmStart) 
     State d = makeState(b.model);
     double l0, tw0;
     historyAt(st, st.pushHistory.front().time, l0, tw0);
-    DeploymentState dd = initDeployment(b.dep, b.model, d, 0.0, tw0);
-    std::string err = pushStatic(b, d, dd, l0, tw0, options_.pushIncrement);
+    resetDevice(b.model, d, 0.0, tw0);
+    std::string err = pushStatic(b, d, l0, tw0, options_.pushIncrement);
     const double h = b.model.timeStep;
     for (double t = st.pushHistory.front().time; err.empty() && t < st.captureTime - 0.5 * h; t += h) {
       double l, tw;
       historyAt(st, t + h, l, tw);
-      setDeployment(b.dep, b.model, d, dd, l, tw);
-      const StepReport r = step(b.model, d);
+      // The file's push history drives the device (not commands): set, then advance.
+      setDeployment(b.model, d, l, tw);
+      const StepReport r = advance(b.model, d);
       if (!r.ok()) err = "dynamic push failed at t = " + std::to_string(t) + " s: " + r.message;
     }
     if (!err.empty()) {
       out[i].message = err;
       continue;
     }
-    out[i] = collect(b, d, dd);
+    out[i] = collect(b, d);
   }
   return out;
 }

@@ -24,7 +24,7 @@
 #include "planning/metrics.h"
 #include "planning/sac_geometry.h"
 #include "io/scene.h"
-#include "physics/controller.h"
+#include "physics/run.h"
 #include "physics/integrator.h"
 #include "support/known_bugs.h"
 
@@ -225,20 +225,16 @@ TEST_P(ContactScene, NoStepOfTheDeploymentPutsTheWireIntoTheWall) {
   const SceneCase sc = GetParam();
   const fs::path scene = fs::path(kSource) / "scenes" / sc.scene;
   const coilsim::io::SceneSpec spec = io::loadScene(scene.string());
-  coilsim::io::CompiledScene compiled = io::compileSceneWithDeployment(spec);
-  const coilsim::Model model = coilsim::compileModel(compiled.model);
+  const coilsim::Model model = coilsim::compileModel(io::compileScene(spec));
   coilsim::State state = coilsim::makeState(model);
-  const coilsim::Deployment& dep = *compiled.deployment;
-  coilsim::DeploymentState ds = coilsim::initDeployment(dep, model, state, compiled.initialDeployed, compiled.initialTwist);
-  coilsim::DeploymentController controller;
-  ASSERT_EQ(controller.command(dep, ds, {coilsim::DeviceCommand::Kind::Push, 0.01, 0.03}), "");
+  const coilsim::Deployment& dep = *model.device;
+  ASSERT_EQ(coilsim::command(model, state, {coilsim::DeviceCommand::Kind::Push, 0.01, 0.03}), "");
   const geometry::MeshQuery stl(io::inspectMeshFile((kCatalogue / sc.mesh).string()).mesh);  // mm
   const double r = 1e3 * dep.section.radius;  // mm
   double deepest = -1e9, deepestAt = 0;  // wire penetration, mm (< 0: clear)
   const int steps = int(std::lround(3.3 / model.timeStep));
   for (int i = 0; i < steps; ++i) {
-    controller.advance(dep, model, state, ds, model.timeStep);
-    ASSERT_TRUE(coilsim::step(model, state).ok()) << "step " << i << ": " << state.warnings.back();
+    ASSERT_TRUE(coilsim::advance(model, state).ok()) << "step " << i << ": " << state.warnings.back();
     const coilsim::RodState& rod = state.rods[dep.chainRod];
     for (int k = 1; k < rod.activeNodes; ++k)
       for (const Vec3& x : {Vec3(rod.x[k]), Vec3(0.5 * (rod.x[k] + rod.x[k - 1]))}) {

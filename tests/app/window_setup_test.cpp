@@ -65,8 +65,8 @@ TEST(WindowSetup, EveryCatalogueCoilAndTipShapeLoadsIntoTheDefaultScene) {
     // The label says shape, loop diameter, length and stiffness as the coil file does.
     EXPECT_NE(choices.coils[i].find(std::string(io::shapeName(catalogue[i].shape))), std::string::npos);
     const ui::SceneSetup s = choices.build(int(i), 0);
-    ASSERT_TRUE(s.deployment);
-    EXPECT_NEAR(s.deployment->deployment.coilLength, catalogue[i].lengthMm * 1e-3, 1e-12) << catalogue[i].name;
+    ASSERT_TRUE(s.model.device);
+    EXPECT_NEAR(s.model.device->coilLength, catalogue[i].lengthMm * 1e-3, 1e-12) << catalogue[i].name;
     EXPECT_TRUE(s.readouts) << "the default scene's phantom gives read-outs";
   }
   // Tip shapes: the rest angle between the held base and the tip is the shape's bend
@@ -75,9 +75,9 @@ TEST(WindowSetup, EveryCatalogueCoilAndTipShapeLoadsIntoTheDefaultScene) {
   ASSERT_EQ(choices.catheters.size(), std::size(expectedDeg));
   for (size_t k = 0; k < choices.catheters.size(); ++k) {
     const ui::SceneSetup s = choices.build(-1, int(k));
-    const Deployment& dep = s.deployment->deployment;
+    const Deployment& dep = *s.model.device;
     EXPECT_EQ(dep.flexible(), k >= 2) << choices.catheters[k];
-    const CatheterTip tip = catheterTip(dep, s.state, s.deployment->initial);
+    const CatheterTip tip = catheterTip(s.model, s.state);
     EXPECT_NEAR(tip.restAngle * 180 / M_PI, expectedDeg[k], 1e-6) << choices.catheters[k];
     if (!dep.flexible()) continue;
     // The body keeps the scene's approach: the held base runs along the scene's

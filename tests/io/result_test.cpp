@@ -104,7 +104,7 @@ TEST(Result, ListsActiveNodesAndTheDeployment) {
   State s = makeState(m);
   s.rods[0].activeNodes = 2;
   RunRecord run;
-  run.deployment = DeploymentState{};
+  run.deployment = DeviceState{};
   run.deployment->deployed = 0.0125;
   run.deployment->twist = M_PI / 2;
   run.deployment->tipOffset = 0.001;

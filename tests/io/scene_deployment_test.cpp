@@ -8,6 +8,7 @@
 
 #include "io/expect_error.h"
 #include "io/scene.h"
+#include "physics/state.h"
 #include "physics/model.h"
 
 namespace coilsim::io {
@@ -74,13 +75,16 @@ TEST(SceneDeployment, CompilesToSiAndAppendsItsRodsAfterTheScenesRods) {
   doc["rods"] = nlohmann::json::parse(R"([{"name": "wire", "length_mm": 10, "beams": 2, "rest_shape": {"type": "straight"},
     "material": {"young_modulus_gpa": 200, "poisson_ratio": 0.3, "density_g_cm3": 7.85},
     "section": {"wire_radius_mm": 0.2}, "boundary": [{"node": 0, "type": "clamped"}]}])");
-  const CompiledScene c = compileSceneWithDeployment(parse(doc));
-  ASSERT_TRUE(c.deployment.has_value());
-  const Deployment& dep = *c.deployment;
-  ASSERT_EQ(c.model.rods.size(), 4u);  // wire, then chain, detached coil, catheter
-  EXPECT_EQ(c.model.rods[0].name, "wire");
+  const ModelDef def = compileScene(parse(doc));
+  ASSERT_TRUE(def.device.has_value());
+  ASSERT_EQ(def.rods.size(), 1u);  // the scene's wire; compileModel appends the deployment's
+  const Model m = compileModel(def);
+  ASSERT_TRUE(m.device.has_value());
+  const Deployment& dep = *m.device;
+  ASSERT_EQ(m.rods.size(), 4u);  // wire, then chain, detached coil, catheter
+  EXPECT_EQ(m.rods[0].name, "wire");
   EXPECT_EQ(dep.chainRod, 1);
-  EXPECT_EQ(c.model.rods[1].name, "coil");
+  EXPECT_EQ(m.rods[1].name, "coil");
   EXPECT_DOUBLE_EQ(dep.coilLength, 0.03);
   EXPECT_EQ(dep.coilBeams, 30);
   EXPECT_DOUBLE_EQ(dep.material.youngModulus, 7.5e9);
@@ -89,16 +93,15 @@ TEST(SceneDeployment, CompilesToSiAndAppendsItsRodsAfterTheScenesRods) {
   EXPECT_TRUE(dep.tip.position.isApprox(Vec3(1e-3, 2e-3, 3e-3)));
   EXPECT_DOUBLE_EQ(dep.maxPushSpeed, 0.02);
   EXPECT_NEAR(dep.maxTwistRate, 4 * M_PI, 1e-12);
-  EXPECT_DOUBLE_EQ(c.initialDeployed, 5e-3);
-  EXPECT_NEAR(c.initialTwist, M_PI / 2, 1e-15);
+  EXPECT_DOUBLE_EQ(dep.initialDeployed, 5e-3);
+  EXPECT_NEAR(dep.initialTwist, M_PI / 2, 1e-15);
+  // makeState puts the device there.
+  EXPECT_DOUBLE_EQ(makeState(m).device.deployed, 5e-3);
   // The coil's rest shape is the rods' helix, from the proximal end.
   ASSERT_EQ(dep.restX.size(), 31u);
   EXPECT_NEAR(dep.restX.front().norm(), 0, 1e-15);
   // The drawn catheter: outer diameter 0.6 mm.
-  EXPECT_DOUBLE_EQ(c.model.rods[dep.catheterRod].section.radius, 0.3e-3);
-  // The plain compile keeps the same rods, and the model builds.
-  EXPECT_EQ(compileScene(parse(doc)).rods.size(), 4u);
-  EXPECT_NO_THROW((void)compileModel(c.model));
+  EXPECT_DOUBLE_EQ(m.rods[dep.catheterRod].section.radius, 0.3e-3);
 }
 
 TEST(SceneDeployment, CoilReusesTheRodReadersAndTheirMessages) {
@@ -158,9 +161,9 @@ std::string flexibleErrorWith(const std::string& pointer, const nlohmann::json& 
 }
 
 TEST(SceneDeployment, FlexibleCatheterCompilesToSiWithItsTipAtTheStatedPose) {
-  const CompiledScene c = compileSceneWithDeployment(parse(flexible()));
-  ASSERT_TRUE(c.deployment);
-  const Deployment& dep = *c.deployment;
+  const Model m = compileModel(compileScene(parse(flexible())));
+  ASSERT_TRUE(m.device);
+  const Deployment& dep = *m.device;
   EXPECT_EQ(dep.tipNode, 20);
   EXPECT_DOUBLE_EQ(dep.catheter.material.youngModulus, 0.3e9);
   EXPECT_DOUBLE_EQ(dep.catheter.outerRadius, 0.3e-3);
@@ -168,7 +171,6 @@ TEST(SceneDeployment, FlexibleCatheterCompilesToSiWithItsTipAtTheStatedPose) {
   EXPECT_NEAR(dep.catheter.shape.angle, M_PI / 2, 1e-15);
   EXPECT_DOUBLE_EQ(dep.catheter.shape.radius, 4e-3);
   EXPECT_EQ(dep.catheter.weighting, CompositeWeighting::BendingStiffness) << "the moment balance is the default";
-  const Model m = compileModel(c.model);
   // Chain: 20 catheter beams then the coil's 30; nodes within 5 mm of the base held.
   EXPECT_EQ(m.rods[dep.chainRod].nnode, 20 + 30 + 1);
   EXPECT_EQ(m.rods[dep.chainRod].constraints.size(), 6u);
@@ -181,7 +183,7 @@ TEST(SceneDeployment, FlexibleCatheterCompilesToSiWithItsTipAtTheStatedPose) {
   EXPECT_NEAR(std::abs((cath.restFrames.front() * Vec3::UnitX()).dot(Vec3::UnitY())), 0, 1e-14);
   auto doc = flexible();
   doc["deployment"]["catheter"]["composite_weighting"] = "young_modulus";
-  EXPECT_EQ(compileSceneWithDeployment(parse(doc)).deployment->catheter.weighting, CompositeWeighting::YoungModulus);
+  EXPECT_EQ(compileScene(parse(doc)).device->catheter.weighting, CompositeWeighting::YoungModulus);
 }
 
 TEST(SceneDeployment, FlexibleCatheterErrorsNameTheirPath) {

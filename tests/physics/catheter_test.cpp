@@ -11,7 +11,8 @@
 #include <cstdio>
 
 #include "physics/catheter.h"
-#include "physics/controller.h"
+#include "physics/deployment.h"
+#include "physics/run.h"
 #include "physics/integrator.h"
 
 namespace coilsim {
@@ -39,8 +40,6 @@ struct Rig {
   Model model;
   Deployment dep;
   State state;
-  DeploymentState ds;
-  DeploymentController ctl;
 };
 
 // A 30 mm coil (wire radius 0.15 mm) that fills the 12 mm catheter when
@@ -65,15 +64,16 @@ Rig makeRig(const CatheterDef& cath, double coilYoung, double deployed, double h
   d.catheter = cath;
   d.initialDeployed = deployed;
   Rig r;
-  r.dep = addDeployment(d, def);
+  def.device = d;
   r.model = compileModel(def);
+  r.dep = *r.model.device;
   r.state = makeState(r.model);
-  r.ds = initDeployment(r.dep, r.model, r.state, deployed, 0.0);
+  resetDevice(r.model, r.state, deployed, 0.0);
   return r;
 }
 
 void run(Rig& r, const std::vector<TimedCommand>& commands, double seconds) {
-  const TimelineRun t = runTimeline(r.dep, r.model, r.state, r.ds, r.ctl, commands, seconds);
+  const TimelineRun t = runTimeline(r.model, r.state, commands, seconds);
   ASSERT_TRUE(t.ok) << (t.log.empty() ? "" : t.log.back());
 }
 
@@ -137,10 +137,10 @@ TEST(CatheterTest, BlendedRestRotationsMatchTheirClosedForms) {
 double straightenedTipAngle(CompositeWeighting rule, double& expected, double& restAngle) {
   const CatheterDef cath = testCatheter(CatheterShape::Type::Angled, 90 * kDeg, rule);
   Rig r = makeRig(cath, 7.5e9, 0.03);  // coil fully out: the catheter empty and at its rest shape
-  restAngle = catheterTip(r.dep, r.state, r.ds).angle;
+  restAngle = catheterTip(r.model, r.state).angle;
   // Pull 25 mm back in (the catheter fills: 12 mm), then let it settle.
   run(r, {{0, {DeviceCommand::Kind::Pull, 0.025, 0.025}}}, 2.5);
-  EXPECT_NEAR(r.ds.deployed, 0.005, 1e-12);
+  EXPECT_NEAR(r.state.device.deployed, 0.005, 1e-12);
   const Section sc = r.dep.catheterSection, sk = r.dep.section;
   const double wc = rule == CompositeWeighting::BendingStiffness ? bendingStiffness(cath.material, sc)
                                                                  : cath.material.youngModulus;
@@ -156,7 +156,7 @@ double straightenedTipAngle(CompositeWeighting rule, double& expected, double& r
                     ? wc * a / (wc + wk)
                     : 2 * std::atan2(wc * std::sin(a / 2), wc * std::cos(a / 2) + wk);
   }
-  return catheterTip(r.dep, r.state, r.ds).angle;
+  return catheterTip(r.model, r.state).angle;
 }
 
 TEST(CatheterTest, StiffCoilStraightensASoftNinetyDegreeTipAsMomentBalancePredicts) {
@@ -229,7 +229,7 @@ TEST(CatheterTest, ResistanceAtTheTipKicksTheCatheterBackByItsAxialCompliance) {
   run(r, {}, 1.0);
   const double ea = cath.material.youngModulus * r.dep.catheterSection.area + r.dep.material.youngModulus * r.dep.section.area;
   const double expected = F * cath.freeLength / ea;
-  const double kick = catheterTip(r.dep, r.state, r.ds).kickback;
+  const double kick = catheterTip(r.model, r.state).kickback;
   std::printf("[ measured ] kickback %.4g m, axial compliance predicts %.4g m\n", kick, expected);
   EXPECT_NEAR(kick, expected, 0.01 * expected);
 }
@@ -243,15 +243,14 @@ TEST(CatheterTest, CoilLengthAndMassAreConservedThroughDeployRetractDeployInAFle
   const std::vector<std::pair<double, DeviceCommand>> phases = {
       {1.0, {K::Push, 0.02, 0.02}}, {0.8, {K::Pull, 0.02, 0.015}}, {1.3, {K::Push, 0.02, 0.025}}};
   for (const auto& [seconds, cmd] : phases) {
-    ASSERT_EQ(r.ctl.command(r.dep, r.ds, cmd), "");
+    ASSERT_EQ(command(r.model, r.state, cmd), "");
     for (int s = 0; s < int(std::lround(seconds / 1e-3)); ++s) {
-      r.ctl.advance(r.dep, r.model, r.state, r.ds, 1e-3);
-      ASSERT_TRUE(step(r.model, r.state).ok()) << "t = " << r.state.time;
-      worstL = std::max(worstL, std::abs(representedCoilLength(r.dep, r.state, r.ds) / L - 1));
-      worstM = std::max(worstM, std::abs(representedCoilMass(r.dep, r.state, r.ds) / mass - 1));
+      ASSERT_TRUE(advance(r.model, r.state).ok()) << "t = " << r.state.time;
+      worstL = std::max(worstL, std::abs(representedCoilLength(r.model, r.state) / L - 1));
+      worstM = std::max(worstM, std::abs(representedCoilMass(r.model, r.state) / mass - 1));
     }
   }
-  EXPECT_NEAR(r.ds.deployed, L, 1e-12);
+  EXPECT_NEAR(r.state.device.deployed, L, 1e-12);
   std::printf("[ measured ] flexible catheter: worst length error %.3g, mass error %.3g\n", worstL, worstM);
   EXPECT_LT(worstL, 1e-12);
   EXPECT_LT(worstM, 1e-12);

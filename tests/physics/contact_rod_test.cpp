@@ -11,7 +11,8 @@
 #include <cmath>
 
 #include "physics/contact/geometry.h"
-#include "physics/controller.h"
+#include "physics/deployment.h"
+#include "physics/run.h"
 #include "physics/integrator.h"
 #include "support/meshes.h"
 #include "support/known_bugs.h"
@@ -22,12 +23,15 @@ namespace {
 
 constexpr double kRadius = 0.15e-3, kLength = 0.025, kSpeed = 0.01;
 
+// Two deployments in one model: a run has one device, so each coil is
+// driven through a model whose device is that coil's (the rods are the same),
+// and the State carries the device state of the one being driven.
 struct TwoCoils {
-  Model model;
+  Model model;               // both coils' rods; its device is the first's
+  Model modelSecond;         // the same with the second's device
   Deployment first, second;
   State state;
-  DeploymentState ds1, ds2;
-  DeploymentController ctl1, ctl2;
+  DeviceState second0;       // the second device at its start
 };
 
 DeploymentDef coilDef(const char* name, double loop, const Vec3& tip) {
@@ -61,9 +65,12 @@ std::unique_ptr<TwoCoils> twoCoils() {
   c->first = addDeployment(coilDef("first", 5e-3, Vec3(0, 0, -2.5e-3)), def);
   c->second = addDeployment(coilDef("second", 4e-3, Vec3(0.5e-3, 0, -2.5e-3)), def);
   c->model = compileModel(def);
-  c->state = makeState(c->model);
-  c->ds1 = initDeployment(c->first, c->model, c->state, 0.0, 0.0);
-  c->ds2 = initDeployment(c->second, c->model, c->state, 0.0, 0.0);
+  c->modelSecond = c->model;
+  c->model.device = c->first;
+  c->modelSecond.device = c->second;
+  c->state = makeState(c->modelSecond);
+  c->second0 = c->state.device;
+  resetDevice(c->model, c->state, 0.0, 0.0);
   return c;
 }
 
@@ -85,10 +92,9 @@ SecondDeployment deployBoth(bool rodContact) {
   auto c = twoCoils();
   const double dt = c->model.timeStep;
   SecondDeployment out;
-  const auto run = [&](DeploymentController& ctl, const Deployment& dep, DeploymentState& ds, int steps, bool measure) {
+  const auto run = [&](const Model& model, int steps, bool measure) {
     for (int i = 0; i < steps && out.ok; ++i) {
-      ctl.advance(dep, c->model, c->state, ds, dt);
-      if (!step(c->model, c->state).ok()) {
+      if (!advance(model, c->state).ok()) {
         ADD_FAILURE() << "step refused: " << c->state.warnings.back();
         out.ok = false;
       }
@@ -99,18 +105,19 @@ SecondDeployment deployBoth(bool rodContact) {
     }
   };
   const int push = int(kLength / kSpeed / dt);
-  EXPECT_EQ(c->ctl1.command(c->first, c->ds1, {DeviceCommand::Kind::Push, kSpeed, kLength}), "");
-  run(c->ctl1, c->first, c->ds1, push + 100, false);
-  EXPECT_EQ(c->ctl1.command(c->first, c->ds1, {DeviceCommand::Kind::Detach, 0, 0}), "");
-  run(c->ctl1, c->first, c->ds1, 200, false);
-  EXPECT_TRUE(c->ds1.detached);
+  EXPECT_EQ(command(c->model, c->state, {DeviceCommand::Kind::Push, kSpeed, kLength}), "");
+  run(c->model, push + 100, false);
+  EXPECT_EQ(command(c->model, c->state, {DeviceCommand::Kind::Detach, 0, 0}), "");
+  run(c->model, 200, false);
+  EXPECT_TRUE(c->state.device.detached);
   // The control switches coil-coil contact off for the second coil only (the
   // first needs it against its catheter while it goes in).
-  for (EffectUse& u : c->model.effects)
+  for (EffectUse& u : c->modelSecond.effects)
     if (u.name() == "rod_contact") u.enabled = rodContact;
-  EXPECT_EQ(c->ctl2.command(c->second, c->ds2, {DeviceCommand::Kind::Push, kSpeed, kLength}), "");
-  run(c->ctl2, c->second, c->ds2, push + 200, true);
-  EXPECT_DOUBLE_EQ(c->ds2.deployed, kLength);
+  c->state.device = c->second0;
+  EXPECT_EQ(command(c->modelSecond, c->state, {DeviceCommand::Kind::Push, kSpeed, kLength}), "");
+  run(c->modelSecond, push + 200, true);
+  EXPECT_DOUBLE_EQ(c->state.device.deployed, kLength);
   return out;
 }
 

@@ -14,7 +14,8 @@
 #include "physics/contact/geometry.h"
 #include "physics/contact/obstacle_tree.h"
 #include "physics/contact/report.h"
-#include "physics/controller.h"
+#include "physics/deployment.h"
+#include "physics/run.h"
 #include "physics/integrator.h"
 #include "support/meshes.h"
 #include "support/rod_models.h"
@@ -157,8 +158,6 @@ struct Cavity {
   Model model;
   Deployment dep;
   State state;
-  DeploymentState ds;
-  DeploymentController ctl;
   TriangleMesh mesh;
 };
 
@@ -185,10 +184,11 @@ std::unique_ptr<Cavity> cavityDeployment(double coilLength, int beams, bool wall
   d.tip.direction = Vec3(0, 0, 1);
   d.tip.normal = Vec3(1, 0, 0);
   d.catheterDrawLength = 0.5e-3;
-  c->dep = addDeployment(d, def);
+  def.device = d;
   c->model = compileModel(def);
+  c->dep = *c->model.device;
   c->state = makeState(c->model);
-  c->ds = initDeployment(c->dep, c->model, c->state, 0.0, 0.0);
+  resetDevice(c->model, c->state, 0.0, 0.0);
   return c;
 }
 
@@ -218,12 +218,11 @@ struct CavityPush {
 CavityPush pushIntoCavity(Cavity& c, double length) {
   CavityPush out;
   const test::ConvexCavity planes(c.mesh);
-  out.refused = c.ctl.command(c.dep, c.ds, {DeviceCommand::Kind::Push, 0.01, length});
+  out.refused = command(c.model, c.state, {DeviceCommand::Kind::Push, 0.01, length});
   const double dt = c.model.timeStep;
   out.planned = int(length / 0.01 / dt) + 300;
   for (; out.refused.empty() && out.steps < out.planned; ++out.steps) {
-    c.ctl.advance(c.dep, c.model, c.state, c.ds, dt);
-    if (!step(c.model, c.state).ok()) {
+    if (!advance(c.model, c.state).ok()) {
       out.refused = "step " + std::to_string(out.steps) + ": " + c.state.warnings.back();
       break;
     }
@@ -244,7 +243,7 @@ TEST(WallContactTest, CoilPushedAt10MmPerSecondStaysInsideA7MmCavity) {
   auto c = cavityDeployment(length, 80, true, true);
   const CavityPush p = pushIntoCavity(*c, length);
   ASSERT_EQ(p.refused, "");
-  EXPECT_DOUBLE_EQ(c->ds.deployed, length);
+  EXPECT_DOUBLE_EQ(c->state.device.deployed, length);
   const double radius = 0.15e-3;
   std::printf("[ measured ] deepest wall penetration %.3f um (%.1f %% of the wire radius), max node wall force %.4f N, "
               "fastest node %.3f m/s\n", p.deepest * 1e6, 100 * p.deepest / radius, p.maxForce, p.fastest);
@@ -273,7 +272,7 @@ TEST(WallContactTest, WithoutFrictionTheCoilStillDeploysInsideTheCavity) {
     }
   const CavityPush p = pushIntoCavity(*c, length);
   ASSERT_EQ(p.refused, "");
-  EXPECT_DOUBLE_EQ(c->ds.deployed, length);
+  EXPECT_DOUBLE_EQ(c->state.device.deployed, length);
   const double radius = 0.15e-3;
   std::printf("[ measured ] without friction: deepest wall penetration %.2f um (%.1f %% of r), fastest node %.2f m/s, "
               "%ld of %d steps retaken in substeps\n", p.deepest * 1e6, 100 * p.deepest / radius, p.fastest,
@@ -303,7 +302,7 @@ TEST(WallContactTest, AThickStiffWireIsHeldByTheDefaultWall) {
                 p.refused.empty() ? "" : (", refused: " + p.refused).c_str());
     if (scaled) {
       ASSERT_EQ(p.refused, "");
-      EXPECT_DOUBLE_EQ(c->ds.deployed, length);
+      EXPECT_DOUBLE_EQ(c->state.device.deployed, length);
       EXPECT_LT(p.deepest, 0.1 * radius);
       EXPECT_GT(p.maxForce, 0) << "the coil never touched the wall: the test would prove nothing";
     } else {
@@ -315,11 +314,10 @@ TEST(WallContactTest, AThickStiffWireIsHeldByTheDefaultWall) {
 TEST(WallContactTest, SwitchedOffTheCoilLeavesTheCavity) {
   const double length = 0.02;
   auto c = cavityDeployment(length, 40, false, false);
-  ASSERT_EQ(c->ctl.command(c->dep, c->ds, {DeviceCommand::Kind::Push, 0.01, length}), "");
+  ASSERT_EQ(command(c->model, c->state, {DeviceCommand::Kind::Push, 0.01, length}), "");
   const double dt = c->model.timeStep;
   for (int i = 0; i < int(length / 0.01 / dt); ++i) {
-    c->ctl.advance(c->dep, c->model, c->state, c->ds, dt);
-    ASSERT_TRUE(step(c->model, c->state).ok());
+    ASSERT_TRUE(advance(c->model, c->state).ok());
   }
   EXPECT_GT(deepestPenetration(*c, test::ConvexCavity(c->mesh)), 1e-3);
 }

@@ -10,7 +10,8 @@
 #include <cstdio>
 #include <cstring>
 
-#include "physics/controller.h"
+#include "physics/deployment.h"
+#include "physics/run.h"
 #include "physics/integrator.h"
 
 namespace coilsim {
@@ -23,8 +24,6 @@ struct Bench {
   Model model;
   Deployment dep;
   State state;
-  DeploymentState ds;
-  DeploymentController ctl;
 };
 
 Bench makeBench(bool gravity, double alpha = 20.0, double initial = 0.0, double young = 7.5e9) {
@@ -44,15 +43,16 @@ Bench makeBench(bool gravity, double alpha = 20.0, double initial = 0.0, double 
   d.tip.normal = Vec3(0, 0, 1);
   d.initialDeployed = initial;
   Bench b;
-  b.dep = addDeployment(d, def);
+  def.device = d;
   b.model = compileModel(def);
+  b.dep = *b.model.device;
   b.state = makeState(b.model);
-  b.ds = initDeployment(b.dep, b.model, b.state, initial, 0.0);
+  resetDevice(b.model, b.state, initial, 0.0);
   return b;
 }
 
 void run(Bench& b, const std::vector<TimedCommand>& commands, double seconds) {
-  const TimelineRun r = runTimeline(b.dep, b.model, b.state, b.ds, b.ctl, commands, seconds);
+  const TimelineRun r = runTimeline(b.model, b.state, commands, seconds);
   ASSERT_TRUE(r.ok) << (r.log.empty() ? "" : r.log.back());
 }
 
@@ -74,7 +74,7 @@ void curvatureTorsion(const std::vector<Vec3>& x, int i, double& kappa, double& 
 TEST(DeploymentTest, SlowPushInFreeSpaceRecoversTheRestHelix) {
   Bench b = makeBench(false);
   run(b, {push(0, 0.01, kLength)}, kLength / 0.01 + 0.5);
-  ASSERT_DOUBLE_EQ(b.ds.deployed, kLength);
+  ASSERT_DOUBLE_EQ(b.state.device.deployed, kLength);
   const RodState& c = b.state.rods[b.dep.chainRod];
   ASSERT_EQ(c.activeNodes, kBeams + 1);
   const double R = kLoop / 2, cc = kPitch / (2 * M_PI);
@@ -133,7 +133,7 @@ TEST(DeploymentTest, TwistByNinetyDegreesTurnsTheLoopAboutTheCatheterAxis) {
   const std::vector<Vec3> before = b.state.rods[b.dep.chainRod].x;
   const int n = b.state.rods[b.dep.chainRod].activeNodes;
   run(b, {{0, {DeviceCommand::Kind::Twist, M_PI, M_PI / 2}}}, 1.5);
-  EXPECT_NEAR(b.ds.twist, M_PI / 2, 1e-12);
+  EXPECT_NEAR(b.state.device.twist, M_PI / 2, 1e-12);
   const Quat turn(Eigen::AngleAxisd(M_PI / 2, b.dep.tip.direction.normalized()));
   double worst = 0, reach = 0;
   for (int i = 0; i < n; ++i) {
@@ -153,15 +153,14 @@ TEST(DeploymentTest, LengthAndMassAreConservedThroughDeployRetractDeploy) {
   std::vector<std::pair<double, DeviceCommand>> phases = {
       {0.02 / 0.02, {DeviceCommand::Kind::Push, 0.02, 0.02}}, {1.0, pull}, {1.5, {DeviceCommand::Kind::Push, 0.02, 0.03}}};
   for (auto& [seconds, cmd] : phases) {
-    ASSERT_EQ(b.ctl.command(b.dep, b.ds, cmd), "");
+    ASSERT_EQ(command(b.model, b.state, cmd), "");
     for (int s = 0; s < int(seconds / 1e-3); ++s) {
-      b.ctl.advance(b.dep, b.model, b.state, b.ds, 1e-3);
-      ASSERT_TRUE(step(b.model, b.state).ok());
-      worstL = std::max(worstL, std::abs(representedCoilLength(b.dep, b.state, b.ds) / L - 1));
-      worstM = std::max(worstM, std::abs(representedCoilMass(b.dep, b.state, b.ds) / mass - 1));
+      ASSERT_TRUE(advance(b.model, b.state).ok());
+      worstL = std::max(worstL, std::abs(representedCoilLength(b.model, b.state) / L - 1));
+      worstM = std::max(worstM, std::abs(representedCoilMass(b.model, b.state) / mass - 1));
     }
   }
-  EXPECT_NEAR(b.ds.deployed, L, 1e-12);
+  EXPECT_NEAR(b.state.device.deployed, L, 1e-12);
   EXPECT_LT(worstL, 1e-12);
   EXPECT_LT(worstM, 1e-12);
   // The simulated centre line is as long as the rest one (axial strain only).
@@ -174,9 +173,9 @@ TEST(DeploymentTest, LengthAndMassAreConservedThroughDeployRetractDeploy) {
 TEST(DeploymentTest, DetachedCoilAtRestDoesNotDrift) {
   Bench b = makeBench(false, 20.0, kLength);
   run(b, {}, 0.3);
-  ASSERT_EQ(b.ctl.command(b.dep, b.ds, {DeviceCommand::Kind::Detach, 0, 0}), "");
+  ASSERT_EQ(command(b.model, b.state, {DeviceCommand::Kind::Detach, 0, 0}), "");
   run(b, {}, 0.001);
-  ASSERT_TRUE(b.ds.detached);
+  ASSERT_TRUE(b.state.device.detached);
   const RodState& f = b.state.rods[b.dep.freeRod];
   ASSERT_TRUE(f.active);
   const std::vector<Vec3> start = f.x;
@@ -190,29 +189,29 @@ TEST(DeploymentTest, DetachedCoilAtRestDoesNotDrift) {
 TEST(DeploymentTest, InvalidCommandsAreRefusedWithAReasonAndChangeNothing) {
   Bench b = makeBench(false, 20.0, 0.01);
   using K = DeviceCommand::Kind;
-  EXPECT_NE(b.ctl.command(b.dep, b.ds, {K::Push, 0.01, 0.05}), "") << "push beyond the coil's end";
-  EXPECT_NE(b.ctl.command(b.dep, b.ds, {K::Push, 10.0, 0}), "") << "push faster than a hand";
-  EXPECT_NE(b.ctl.command(b.dep, b.ds, {K::Push, std::nan(""), 0}), "") << "NaN speed";
-  EXPECT_NE(b.ctl.command(b.dep, b.ds, {K::Detach, 0, 0}), "") << "detach before the coil is out";
-  EXPECT_NE(b.ctl.command(b.dep, b.ds, {K::Pull, 0.01, 0.02}), "") << "pull more than is out";
-  EXPECT_FALSE(b.ctl.moving());
+  EXPECT_NE(command(b.model, b.state, {K::Push, 0.01, 0.05}), "") << "push beyond the coil's end";
+  EXPECT_NE(command(b.model, b.state, {K::Push, 10.0, 0}), "") << "push faster than a hand";
+  EXPECT_NE(command(b.model, b.state, {K::Push, std::nan(""), 0}), "") << "NaN speed";
+  EXPECT_NE(command(b.model, b.state, {K::Detach, 0, 0}), "") << "detach before the coil is out";
+  EXPECT_NE(command(b.model, b.state, {K::Pull, 0.01, 0.02}), "") << "pull more than is out";
+  EXPECT_FALSE(b.state.device.motion.moving());
   Bench d = makeBench(false, 20.0, kLength);
-  ASSERT_EQ(d.ctl.command(d.dep, d.ds, {K::Detach, 0, 0}), "");
+  ASSERT_EQ(command(d.model, d.state, {K::Detach, 0, 0}), "");
   run(d, {}, 0.001);
-  EXPECT_NE(d.ctl.command(d.dep, d.ds, {K::Pull, 0.01, 0.001}), "") << "pull after detach";
-  EXPECT_NE(d.ctl.command(d.dep, d.ds, {K::Twist, 1.0, 0.1}), "") << "twist after detach";
+  EXPECT_NE(command(d.model, d.state, {K::Pull, 0.01, 0.001}), "") << "pull after detach";
+  EXPECT_NE(command(d.model, d.state, {K::Twist, 1.0, 0.1}), "") << "twist after detach";
 }
 
 TEST(DeploymentTest, ReachingTheCoilsEndIsSaidOnceEvenWhileTheCatheterIsRetracted) {
   Bench b = makeBench(false, 20.0, kLength - 0.002);
   using K = DeviceCommand::Kind;
-  const TimelineRun r = runTimeline(b.dep, b.model, b.state, b.ds, b.ctl,
+  const TimelineRun r = runTimeline(b.model, b.state,
                                     {push(0, 0.01, 0), {0.3, {K::Retract, 0.005, 0.001}}}, 0.6);
   ASSERT_TRUE(r.ok);
   int said = 0;
   for (const std::string& line : r.log) said += line.find("fully deployed") != std::string::npos;
   EXPECT_EQ(said, 1) << "one limit reached, one message (the retraction keeps pressing on it every step)";
-  EXPECT_DOUBLE_EQ(b.ds.deployed, kLength);
+  EXPECT_DOUBLE_EQ(b.state.device.deployed, kLength);
 }
 
 TEST(DeploymentTest, ReplayingATimelineIsBitForBit) {

@@ -12,10 +12,9 @@
 namespace coilsim::test {
 
 struct HelixDeployment {
-  Model model;
-  Deployment dep;
-  State start;
-  DeploymentState ds0;
+  Model model;     // with the deployment as its device
+  Deployment dep;  // model.device, for short
+  State start;     // `initialMm` out
 };
 
 inline HelixDeployment makeHelixDeployment(double lengthMm = 40.0, double initialMm = 2.0) {
@@ -32,10 +31,11 @@ inline HelixDeployment makeHelixDeployment(double lengthMm = 40.0, double initia
   d.coilSection = circularSection(0.15e-3, 0.39);
   d.tip.normal = Vec3(0, 0, 1);
   d.maxPushSpeed = 0.05;
-  s.dep = addDeployment(d, def);
+  d.initialDeployed = initialMm * 1e-3;
+  def.device = d;
   s.model = compileModel(def);
+  s.dep = *s.model.device;
   s.start = makeState(s.model);
-  s.ds0 = initDeployment(s.dep, s.model, s.start, initialMm * 1e-3, 0.0);
   return s;
 }
 

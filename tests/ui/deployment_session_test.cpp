@@ -46,13 +46,12 @@ TEST(SessionDeployment, TimelineInTheWindowMatchesTheHeadlessRunBitForBit) {
   const double duration = 0.6;
 
   State headless = sc.start;
-  DeploymentState dsHeadless = sc.ds0;
-  DeploymentController controller;
-  const TimelineRun run = runTimeline(sc.dep, sc.model, headless, dsHeadless, controller, timeline, duration);
+  const TimelineRun run = runTimeline(sc.model, headless, timeline, duration);
+  const DeviceState& dsHeadless = headless.device;
   ASSERT_TRUE(run.ok);
 
   Session s(sc.model, sc.start);
-  s.attachDeployment({sc.dep, sc.ds0, timeline});
+  s.setTimeline(timeline);
   // Half the run frame by frame through the real-time loop, half step by step.
   s.setPlaying(true);
   s.setStopTime(0.2);
@@ -79,11 +78,11 @@ TEST(SessionDeployment, TimelineInTheWindowMatchesTheHeadlessRunBitForBit) {
 TEST(SessionDeployment, ResetRestartsTheDeploymentAndTheTimeline) {
   const Scene sc = makeScene();
   Session s(sc.model, sc.start);
-  s.attachDeployment({sc.dep, sc.ds0, {{0.0, cmd(DeviceCommand::Kind::Push, 0.01)}}});
+  s.setTimeline({{0.0, cmd(DeviceCommand::Kind::Push, 0.01)}});
   for (int i = 0; i < 100; ++i) ASSERT_TRUE(s.stepOnce().ok());
   EXPECT_NEAR(s.deploymentState().deployed, 0.002 + 100 * 1e-3 * 0.01, 1e-12);
   s.reset();
-  EXPECT_EQ(s.deploymentState().deployed, sc.ds0.deployed);
+  EXPECT_EQ(s.deploymentState().deployed, sc.start.device.deployed);
   EXPECT_EQ(s.timelineCursor(), 0u);
   EXPECT_TRUE(s.deviceMessages().empty());
   s.stepOnce();  // the timeline plays again from t = 0
@@ -92,22 +91,23 @@ TEST(SessionDeployment, ResetRestartsTheDeploymentAndTheTimeline) {
 
 TEST(SessionDeployment, RefusedCommandsSayWhy) {
   const Scene sc = makeScene();
+  Model noDevice = sc.model;
+  noDevice.device.reset();
+  EXPECT_NE(Session(noDevice, sc.start).command(cmd(DeviceCommand::Kind::Push, 0.01)).find("no deployment"),
+            std::string::npos);
   Session s(sc.model, sc.start);
-  EXPECT_NE(s.command(cmd(DeviceCommand::Kind::Push, 0.01)).find("no deployment"), std::string::npos);
-  s.attachDeployment({sc.dep, sc.ds0, {}});
   const std::string why = s.command(cmd(DeviceCommand::Kind::Detach, 0));
   EXPECT_NE(why.find("not fully out"), std::string::npos) << why;
   EXPECT_TRUE(anyMessageHas(s, "not fully out"));
   // Nothing moved: the refusal changes nothing.
   s.stepOnce();
-  EXPECT_EQ(s.deploymentState().deployed, sc.ds0.deployed);
+  EXPECT_EQ(s.deploymentState().deployed, sc.start.device.deployed);
   EXPECT_FALSE(s.deploymentState().detached);
 }
 
 TEST(SessionDeployment, PushedToTheEndThenDetached) {
   const Scene sc = makeScene(38.0);
   Session s(sc.model, sc.start);
-  s.attachDeployment({sc.dep, sc.ds0, {}});
   EXPECT_EQ(s.command(cmd(DeviceCommand::Kind::Push, 0.05)), "");
   for (int i = 0; i < 60 && !s.deviceMessages().size(); ++i) ASSERT_TRUE(s.stepOnce().ok());
   EXPECT_TRUE(anyMessageHas(s, "fully deployed"));
@@ -123,7 +123,6 @@ TEST(SessionDeployment, PushedToTheEndThenDetached) {
 TEST(DeviceInput, LeversPushPullAndTwistAtThePanelSpeed) {
   const Scene sc = makeScene(10.0);
   Session s(sc.model, sc.start);
-  s.attachDeployment({sc.dep, sc.ds0, {}});
   DeviceControls controls;
   controls.pushSpeedMmS = 4.0;
   controls.twistRateDegS = 90.0;
@@ -156,7 +155,6 @@ TEST(DeviceInput, LeversPushPullAndTwistAtThePanelSpeed) {
 TEST(DeviceInput, AHeldLeverAgainstALimitIsRefusedOnce) {
   const Scene sc = makeScene(0.0);
   Session s(sc.model, sc.start);
-  s.attachDeployment({sc.dep, sc.ds0, {}});
   DeviceInput in;
   for (int i = 0; i < 30; ++i) in.update(s, DeviceControls{}, -1.0, 0.0);  // pull with nothing out
   ASSERT_EQ(s.deviceMessages().size(), 1u);

@@ -51,18 +51,17 @@ struct Log : RunObserver {
     views.emplace_back(t, v);
     view = v;
   }
-  void beforeDevice(const DeploymentState&) override {
+  void beforeStep(const State&) override {
     ++before;
     if (view != "3d") ++fluoroSteps;
   }
-  void afterStep(const Model&, const State&, const DeploymentState&, bool, const std::string&) override { ++after; }
+  void afterStep(const Model&, const State&, bool, const std::string&) override { ++after; }
   void restarted() override { *this = Log(); restarts = 1; }
 };
 
 TEST(RunObserver, ScriptedInputsActAtTheFirstStepStartingAtOrAfterTheirTime) {
   const Scene sc = makeScene();
   Session session(sc.model, sc.start);
-  session.attachDeployment({sc.dep, sc.ds0, {}});
   auto log = std::make_shared<Log>();
   session.setObserver(log);
   // 10 mm/s asked, 5 mm/s applied (the observer halves it), from 0.1005 s: the step starting at 0.101 s.
@@ -93,7 +92,6 @@ TEST(RunObserver, ScriptedInputsActAtTheFirstStepStartingAtOrAfterTheirTime) {
 TEST(RunObserver, ResetStartsTheInputsAgain) {
   const Scene sc = makeScene();
   Session session(sc.model, sc.start);
-  session.attachDeployment({sc.dep, sc.ds0, {}});
   auto log = std::make_shared<Log>();
   session.setObserver(log);
   session.setView("biplane");
@@ -114,7 +112,6 @@ TEST(RunObserver, ResetStartsTheInputsAgain) {
 TEST(SetupChoice, ALoadedSetupReplacesTheRunAFailedOneKeepsIt) {
   const Scene first = makeScene(40.0);
   Session session(first.model, first.start);
-  session.attachDeployment({first.dep, first.ds0, {}});
   session.setPlaying(true);
   session.stepMany(10);
   SetupChoices choices;
@@ -125,7 +122,6 @@ TEST(SetupChoice, ALoadedSetupReplacesTheRunAFailedOneKeepsIt) {
     SceneSetup setup;
     setup.model = s.model;
     setup.state = s.start;
-    setup.deployment = DeploymentSetup{s.dep, s.ds0, {}};
     setup.readouts.compute = [](const Model&, const State&) { return std::vector<Readout>{{"a", "b", false}}; };
     setup.loaded = "loaded the short coil";
     return setup;
@@ -159,7 +155,6 @@ TEST(SetupChoice, ALoadedSetupReplacesTheRunAFailedOneKeepsIt) {
 TEST(RunObserver, XrayOnlySessionIgnoresAScripted3dView) {
   const Scene sc = makeScene();
   Session session(sc.model, sc.start);
-  session.attachDeployment({sc.dep, sc.ds0, {}});
   session.setView("biplane");
   session.setXrayOnly(true);
   auto log = std::make_shared<Log>();

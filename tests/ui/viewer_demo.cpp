@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
 
   const bool helix = scene == "helix";
   if (!helix && scene != "rod") return usage();
-  const Model model = helix ? testing::helixModel() : testing::straightRodModel();
+  Model model = helix ? testing::helixModel() : testing::straightRodModel();
   State state = makeState(model);
   ui::ViewerOptions o;
   o.scenePath = "inline " + scene + " scene";

@@ -8,7 +8,6 @@
 #include "physics/model.h"
 #include "physics/state.h"
 #include "validation/diagnose.h"
-#include "validation/effects.h"
 #include "validation/generate.h"
 
 namespace coilsim {

@@ -17,7 +17,6 @@
 #include <functional>
 
 #include "validation/diagnose.h"
-#include "validation/effects.h"
 #include "validation/generate.h"
 #include "physics/contact/geometry.h"
 #include "support/known_bugs.h"
@@ -136,7 +135,6 @@ struct Hidden {
 // `refit` false: points (1) and (2) only (for an effect whose refit is
 // guarded by an open bug in a test of its own).
 void checkHidden(const Measurement& sk, const Hidden& h, bool refit = true) {
-  ensureValidationEffects();
   ModelParams truth = truthOf(sk);
   truth.effects.push_back(EffectRegistry::global().use(h.effect));
   h.set(truth.effects.back());
@@ -214,7 +212,6 @@ TEST(HiddenEffect, CatheterCompliance) {
 // returns E rho_c / (rho_c - rho_f), and diagnose calls buoyancy
 // indistinguishable, not significant. (With a swing it is found: below.)
 TEST(HiddenEffect, BuoyancyIsAbsorbedByE) {
-  ensureValidationEffects();
   Measurement sk = skeleton();
   const double rhoC = 6450, rhoF = 1000;  // a nitinol coil in water: buoyancy 15 % of the weight
   sk.mediumDensity = rhoF;
@@ -289,7 +286,6 @@ Measurement stackedLoops() {
 TEST(HiddenEffect, SelfContactStacksTheLoops) {
   SKIP_IF_OPEN(coilsim::test::kStaticSelfContactDiverges);
   const Measurement sk = stackedLoops();
-  ensureValidationEffects();
   ModelParams p = truthOf(sk);
   p.effects.push_back(EffectRegistry::global().use("self_contact"));
   StageSimulator sim(sk, coarse());

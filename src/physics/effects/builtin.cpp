@@ -7,6 +7,8 @@ void registerBuiltinEffects(EffectRegistry& r) {
   r.add(makeGravityEffect());
   r.add(makeBuoyancyEffect());
   r.add(makeDragEffect());
+  r.add(makeGravityTiltEffect());
+  r.add(makeCatheterComplianceEffect());
   r.add(makeWallContactEffect());
   r.add(makeSelfContactEffect());
   r.add(makeRodContactEffect());

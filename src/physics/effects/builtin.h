@@ -11,4 +11,6 @@ std::unique_ptr<Effect> makeDragEffect();
 std::unique_ptr<Effect> makeWallContactEffect();
 std::unique_ptr<Effect> makeSelfContactEffect();
 std::unique_ptr<Effect> makeRodContactEffect();
+std::unique_ptr<Effect> makeGravityTiltEffect();
+std::unique_ptr<Effect> makeCatheterComplianceEffect();
 }  // namespace coilsim

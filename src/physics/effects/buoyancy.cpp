@@ -1,4 +1,5 @@
 // Buoyancy (Archimedes): the displaced fluid's weight, -rho_f A l g per node.
+#include <algorithm>
 #include <cmath>
 
 #include "physics/effects/builtin.h"
@@ -13,6 +14,8 @@ constexpr ParamSpec kParams[] = {
      1000.0},
 };
 
+constexpr size_t kDensity = paramIndex(kParams, "medium_density_g_cm3");
+
 // The fluid displaced by a node's piece of rod (a cylinder of its outer radius).
 double displacedVolume(const NodeProps& n) { return M_PI * n.radius * n.radius * n.length; }
 
@@ -23,13 +26,18 @@ class Buoyancy final : public Effect {
   std::span<const ParamSpec> params() const override { return kParams; }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
     for (int i = 0; i < c.state.activeNodes; ++i)
-      out.force[i].head<3>() -= c.loadFactor * p[0] * displacedVolume(c.state.nodes[i]) * c.model.gravity;
+      out.force[i].head<3>() -= c.loadFactor * p[kDensity] * displacedVolume(c.state.nodes[i]) * c.model.gravity;
   }
   double energy(const EffectContext& c, std::span<const double> p) const override {
     double e = 0;
     for (int i = 0; i < c.state.activeNodes; ++i)
-      e += p[0] * displacedVolume(c.state.nodes[i]) * c.model.gravity.dot(c.state.x[i]);
+      e += p[kDensity] * displacedVolume(c.state.nodes[i]) * c.model.gravity.dot(c.state.x[i]);
     return e;
+  }
+  // Fitted from none (off) to water at least; plausible from air to contrast agent (1.4 g/cm3).
+  std::optional<Diagnosable> diagnosis(const SetupHint& setup) const override {
+    return Diagnosable{{{kParams[kDensity].name, 0.0, std::max(setup.mediumDensity, 1000.0), 0.0, 1500.0}},
+                       {{kParams[kDensity].name, setup.mediumDensity}}};
   }
 };
 

@@ -18,13 +18,16 @@ constexpr ParamSpec kParams[] = {
     {"rft_length_mm", "mm", "characteristic length lambda of resistive-force theory", 7.0, 0.1, 1000.0, 1e-3},
 };
 
+constexpr size_t kViscosity = paramIndex(kParams, "viscosity_pa_s");
+constexpr size_t kLambda = paramIndex(kParams, "rft_length_mm");
+
 class Drag final : public Effect {
  public:
   std::string_view name() const override { return "drag"; }
   std::string_view description() const override { return "viscous drag of the medium (resistive-force theory)"; }
   std::span<const ParamSpec> params() const override { return kParams; }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
-    const double mu = p[0], lambda = p[1];
+    const double mu = p[kViscosity], lambda = p[kLambda];
     for (int i = 0; i < c.state.activeNodes; ++i) {
       // Keep the logarithm away from its pole for absurdly short lambda.
       const double lg = std::max(std::log(2.0 * lambda / c.state.nodes[i].radius), 1.0);
@@ -36,6 +39,11 @@ class Drag final : public Effect {
       out.damping[i].topLeftCorner<3, 3>() += d;
       out.touchedMatrix = true;
     }
+  }
+  // Fitted from none (off) to a viscous medium; plausible from air to glycerol (1.4 Pa s).
+  std::optional<Diagnosable> diagnosis(const SetupHint& setup) const override {
+    return Diagnosable{{{kParams[kViscosity].name, 0.0, std::max(setup.mediumViscosity, 0.01), 0.0, 2.0}},
+                       {{kParams[kViscosity].name, setup.mediumViscosity}}};
   }
 };
 

@@ -18,6 +18,9 @@ constexpr ParamSpec kParams[] = {
     {"tilt_b_deg", "deg", "bench tilt about e2 = gravity direction x e1", 0.0, -30.0, 30.0, kRadPerDeg},
 };
 
+constexpr size_t kTiltA = paramIndex(kParams, "tilt_a_deg");
+constexpr size_t kTiltB = paramIndex(kParams, "tilt_b_deg");
+
 // The tilted gravity minus the nominal one.
 Vec3 gravityChange(const Vec3& g, double a, double b) {
   const double gn = g.norm();
@@ -36,14 +39,20 @@ class GravityTilt final : public Effect {
   std::string_view description() const override { return "bench not level: gravity turned by two small tilt angles"; }
   std::span<const ParamSpec> params() const override { return kParams; }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
-    const Vec3 dg = gravityChange(c.model.gravity, p[0], p[1]);
+    const Vec3 dg = gravityChange(c.model.gravity, p[kTiltA], p[kTiltB]);
     for (int i = 0; i < c.state.activeNodes; ++i) out.force[i].head<3>() += c.loadFactor * c.state.nodes[i].mass * dg;
   }
   double energy(const EffectContext& c, std::span<const double> p) const override {
-    const Vec3 dg = gravityChange(c.model.gravity, p[0], p[1]);
+    const Vec3 dg = gravityChange(c.model.gravity, p[kTiltA], p[kTiltB]);
     double e = 0;
     for (int i = 0; i < c.state.activeNodes; ++i) e -= c.state.nodes[i].mass * dg.dot(c.state.x[i]);
     return e;
+  }
+  // Level is off; a bench set up by eye is level within a few degrees.
+  std::optional<Diagnosable> diagnosis(const SetupHint&) const override {
+    const double typical = 1.0 * kRadPerDeg, band = 5.0 * kRadPerDeg;
+    return Diagnosable{{{kParams[kTiltA].name, 0.0, typical, -band, band},
+                        {kParams[kTiltB].name, 0.0, typical, -band, band}}, {}};
   }
 };
 

@@ -22,8 +22,19 @@ constexpr ParamSpec kParams[] = {
      10.0, 1.0},
 };
 
-ContactLaw coilLaw(std::span<const double> p) { return {p[0], p[1], p[3], p[4], p[7], 2.0}; }
-ContactLaw catheterLaw(std::span<const double> p) { return {p[0], p[1], p[5], p[6], p[7], 2.0}; }
+constexpr size_t kStiffness = paramIndex(kParams, "stiffness_n_mm"), kDamping = paramIndex(kParams, "damping_ratio"),
+                 kMargin = paramIndex(kParams, "margin_mm"), kStatic = paramIndex(kParams, "friction_static"),
+                 kDynamic = paramIndex(kParams, "friction_dynamic"),
+                 kCatheterStatic = paramIndex(kParams, "catheter_friction_static"),
+                 kCatheterDynamic = paramIndex(kParams, "catheter_friction_dynamic"),
+                 kStick = paramIndex(kParams, "friction_stiffness_ratio");
+
+ContactLaw coilLaw(std::span<const double> p) {
+  return {p[kStiffness], p[kDamping], p[kStatic], p[kDynamic], p[kStick], 2.0};
+}
+ContactLaw catheterLaw(std::span<const double> p) {
+  return {p[kStiffness], p[kDamping], p[kCatheterStatic], p[kCatheterDynamic], p[kStick], 2.0};
+}
 
 class RodContact final : public Effect {
  public:
@@ -31,10 +42,10 @@ class RodContact final : public Effect {
   std::string_view description() const override { return "coil-coil and coil-catheter contact, with friction"; }
   std::span<const ParamSpec> params() const override { return kParams; }
   void beginStep(const Model& model, std::span<const double> p, State& state) const override {
-    detectRodContacts(model, state, false, p[2], coilLaw(p), catheterLaw(p));
+    detectRodContacts(model, state, false, p[kMargin], coilLaw(p), catheterLaw(p));
   }
   std::string endStep(const Model& model, std::span<const double> p, const State& state) const override {
-    return checkRodContacts(model, state, false, p[2]);
+    return checkRodContacts(model, state, false, p[kMargin]);
   }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
     const ContactLaw coil = coilLaw(p), catheter = catheterLaw(p);

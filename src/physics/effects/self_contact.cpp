@@ -22,8 +22,13 @@ constexpr ParamSpec kParams[] = {
      0.0, 5.0, 1.0},
 };
 
+constexpr size_t kStiffness = paramIndex(kParams, "stiffness_n_mm"), kDamping = paramIndex(kParams, "damping_ratio"),
+                 kMargin = paramIndex(kParams, "margin_mm"), kStatic = paramIndex(kParams, "friction_static"),
+                 kDynamic = paramIndex(kParams, "friction_dynamic"), kStick = paramIndex(kParams, "friction_stiffness_ratio"),
+                 kRadiusScale = paramIndex(kParams, "contact_radius_scale");
+
 ContactLaw lawOf(std::span<const double> p) {
-  return {p[0], p[1], p[3], p[4], p[5], 2.0, p[6]};
+  return {p[kStiffness], p[kDamping], p[kStatic], p[kDynamic], p[kStick], 2.0, p[kRadiusScale]};
 }
 
 class SelfContact final : public Effect {
@@ -33,20 +38,27 @@ class SelfContact final : public Effect {
   std::span<const ParamSpec> params() const override { return kParams; }
   void beginStep(const Model& model, std::span<const double> p, State& state) const override {
     const ContactLaw law = lawOf(p);
-    detectRodContacts(model, state, true, p[2], law, law);
+    detectRodContacts(model, state, true, p[kMargin], law, law);
   }
   // A loop snapping onto another within one step, from a start where the
   // pair was beyond the margin and not closing, is outside the step's
   // implicit solve: the step is retaken in substeps (as for rod_contact).
   std::string endStep(const Model& model, std::span<const double> p, const State& state) const override {
-    return checkRodContacts(model, state, true, p[2], p[6]);
+    return checkRodContacts(model, state, true, p[kMargin], p[kRadiusScale]);
   }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
     applyContacts(c.state.contact.self, c.state, lawOf(p), c.model.timeStep, out, true);
   }
   double limitStaticUpdate(const Model&, std::span<const double> p, const State& state, int rod,
                            std::span<const Vec3> dx) const override {
-    return safeStaticFraction(state, rod, dx, true, p[6]);
+    return safeStaticFraction(state, rod, dx, true, p[kRadiusScale]);
+  }
+  // Its magnitude is where loops touch: at 0 they pass through each other
+  // (off), at 1 the wire's own diameter; a wound coil's outer diameter is
+  // up to about twice its stiffness-equivalent wire's. (Its penalty
+  // stiffness only sets how far they press in: well under a micrometre.)
+  std::optional<Diagnosable> diagnosis(const SetupHint&) const override {
+    return Diagnosable{{{kParams[kRadiusScale].name, 0.0, 1.0, 0.9, 2.2}}, {}};
   }
 };
 

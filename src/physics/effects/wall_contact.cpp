@@ -29,8 +29,13 @@ constexpr ParamSpec kParams[] = {
      10.0, 0.0, 1e4, 1e9},
 };
 
+constexpr size_t kStiffness = paramIndex(kParams, "stiffness_n_mm2"), kDamping = paramIndex(kParams, "damping_ratio"),
+                 kMargin = paramIndex(kParams, "margin_mm"), kStatic = paramIndex(kParams, "friction_static"),
+                 kDynamic = paramIndex(kParams, "friction_dynamic"), kStick = paramIndex(kParams, "friction_stiffness_ratio"),
+                 kPerRigidity = paramIndex(kParams, "stiffness_per_rigidity_1_mm3");
+
 ContactLaw lawOf(std::span<const double> p) {
-  return {p[0], p[1], p[3], p[4], p[5], 1.0};
+  return {p[kStiffness], p[kDamping], p[kStatic], p[kDynamic], p[kStick], 1.0};
 }
 
 class WallContact final : public Effect {
@@ -39,16 +44,16 @@ class WallContact final : public Effect {
   std::string_view description() const override { return "rods against the obstacle meshes, with friction"; }
   std::span<const ParamSpec> params() const override { return kParams; }
   void beginStep(const Model& model, std::span<const double> p, State& state) const override {
-    detectWallContacts(model, state, p[2], lawOf(p), p[6]);
+    detectWallContacts(model, state, p[kMargin], lawOf(p), p[kPerRigidity]);
   }
   // A node sliding fast along a curved wall leaves the tangent plane its
   // step was solved with: the step is retaken in substeps (detect.h).
   std::string endStep(const Model& model, std::span<const double> p, const State& state) const override {
-    return checkWallContacts(model, state, p[2]);
+    return checkWallContacts(model, state, p[kMargin]);
   }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
     ContactLaw law = lawOf(p);
-    law.stiffness = wallStiffness(law.stiffness, p[6], c.rod);
+    law.stiffness = wallStiffness(law.stiffness, p[kPerRigidity], c.rod);
     applyContacts(c.state.contact.wall, c.state, law, c.model.timeStep, out);
   }
 };

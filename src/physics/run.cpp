@@ -1,9 +1,9 @@
-#include "physics/controller.h"
+#include "physics/run.h"
 
 #include <cmath>
 #include <cstdio>
 
-#include "physics/integrator.h"
+#include "physics/deployment.h"
 
 namespace coilsim {
 namespace {
@@ -26,8 +26,12 @@ double advanceBy(double rate, double& left, double dt) {
 
 }  // namespace
 
-std::string DeploymentController::command(const Deployment& dep, const DeploymentState& ds, const DeviceCommand& c) {
+std::string command(const Model& model, State& state, const DeviceCommand& c) {
   using K = DeviceCommand::Kind;
+  if (!model.device) return "refused: this run has no device to command";
+  const Deployment& dep = *model.device;
+  const DeviceState& ds = state.device;
+  DeviceMotion& m = state.device.motion;
   if (!std::isfinite(c.rate) || !std::isfinite(c.amount) || c.amount < 0)
     return "refused: rate must be finite and amount finite and >= 0";
   const bool coilMotion = c.kind == K::Push || c.kind == K::Pull || c.kind == K::Twist || c.kind == K::Detach;
@@ -45,75 +49,84 @@ std::string DeploymentController::command(const Deployment& dep, const Deploymen
                " left)";
       if (!push && c.amount > ds.deployed + 1e-12)
         return "refused: pulling " + mm(c.amount) + " is more than the " + mm(ds.deployed) + " outside";
-      pushRate_ = push ? c.rate : -c.rate;
-      pushLeft_ = c.amount > 0 ? c.amount : -1;
+      m.pushRate = push ? c.rate : -c.rate;
+      m.pushLeft = c.amount > 0 ? c.amount : -1;
       return {};
     }
     case K::Twist:
       if (c.rate == 0 || std::abs(c.rate) > dep.maxTwistRate) return "refused: twist rate must be non-zero and within the limit";
-      twistRate_ = c.rate;
-      twistLeft_ = c.amount > 0 ? c.amount : -1;
+      m.twistRate = c.rate;
+      m.twistLeft = c.amount > 0 ? c.amount : -1;
       return {};
     case K::Stop:
-      pushRate_ = twistRate_ = retractRate_ = 0;
+      m.pushRate = m.twistRate = m.retractRate = 0;
       return {};
     case K::Detach:
       if (ds.deployed < dep.coilLength - 1e-9)
         return "refused: the coil is not fully out (" + mm(ds.deployed) + " of " + mm(dep.coilLength) +
                "): push it out before detaching";
-      pendingDetach_ = true;
+      m.pendingDetach = true;
       return {};
     case K::Retract:
       if (!(c.rate > 0) || c.rate > dep.maxPushSpeed)
         return "refused: retraction speed must be in (0, " + mm(dep.maxPushSpeed) + "/s]";
-      retractRate_ = c.rate;
-      retractLeft_ = c.amount > 0 ? c.amount : -1;
+      m.retractRate = c.rate;
+      m.retractLeft = c.amount > 0 ? c.amount : -1;
       return {};
   }
   return "refused: unknown command";
 }
 
-void DeploymentController::advance(const Deployment& dep, const Model& model, State& state, DeploymentState& ds,
-                                   double dt) {
-  if (pendingDetach_) {
-    pendingDetach_ = false;
-    const std::string why = detach(dep, model, state, ds);
+void moveDevice(const Model& model, State& state) {
+  if (!model.device) return;
+  const double dt = model.timeStep;
+  const Deployment& dep = *model.device;
+  DeviceState& ds = state.device;
+  DeviceMotion& m = ds.motion;
+  std::vector<std::string>& notes = ds.notes;
+  if (m.pendingDetach) {
+    m.pendingDetach = false;
+    const std::string why = detach(model, state);
     notes.push_back(why.empty() ? "detached" : "refused: " + why);
-    pushRate_ = twistRate_ = 0;
+    m.pushRate = m.twistRate = 0;
   }
   double deployed = ds.deployed, twist = ds.twist;
-  if (retractRate_ != 0) {
-    const double d = advanceBy(retractRate_, retractLeft_, dt);
-    setTipOffset(dep, state, ds, ds.tipOffset + d);
+  if (m.retractRate != 0) {
+    const double d = advanceBy(m.retractRate, m.retractLeft, dt);
+    setTipOffset(model, state, ds.tipOffset + d);
     deployed += d;  // the pusher holds the coil: it is unsheathed as the catheter goes back
-    if (retractLeft_ == 0) retractRate_ = 0;
+    if (m.retractLeft == 0) m.retractRate = 0;
   }
-  if (pushRate_ != 0) {
-    deployed += advanceBy(pushRate_, pushLeft_, dt);
-    if (pushLeft_ == 0) pushRate_ = 0;
+  if (m.pushRate != 0) {
+    deployed += advanceBy(m.pushRate, m.pushLeft, dt);
+    if (m.pushLeft == 0) m.pushRate = 0;
   }
-  if (twistRate_ != 0) {
-    twist += advanceBy(twistRate_, twistLeft_, dt);
-    if (twistLeft_ == 0) twistRate_ = 0;
+  if (m.twistRate != 0) {
+    twist += advanceBy(m.twistRate, m.twistLeft, dt);
+    if (m.twistLeft == 0) m.twistRate = 0;
   }
-  if (deployed >= dep.coilLength && (pushRate_ > 0 || retractRate_ > 0)) {
+  if (deployed >= dep.coilLength && (m.pushRate > 0 || m.retractRate > 0)) {
     // Said once, when the limit is reached (a push stops on it): retracting
     // the catheter over a coil that is already out hits it every step.
-    if (pushRate_ > 0 || ds.deployed < dep.coilLength - 1e-9) notes.push_back("the coil is fully deployed");
+    if (m.pushRate > 0 || ds.deployed < dep.coilLength - 1e-9) notes.push_back("the coil is fully deployed");
     deployed = dep.coilLength;
-    pushRate_ = std::min(pushRate_, 0.0);
+    m.pushRate = std::min(m.pushRate, 0.0);
   }
-  if (deployed <= 0 && pushRate_ < 0) {
+  if (deployed <= 0 && m.pushRate < 0) {
     deployed = 0;
-    pushRate_ = 0;
+    m.pushRate = 0;
     notes.push_back("the coil is back inside the catheter");
   }
-  if (!ds.detached && (deployed != ds.deployed || twist != ds.twist)) setDeployment(dep, model, state, ds, deployed, twist);
-  syncCatheterDrawing(dep, state);
+  if (!ds.detached && (deployed != ds.deployed || twist != ds.twist)) setDeployment(model, state, deployed, twist);
+  syncCatheterDrawing(model, state);
 }
 
-TimelineRun runTimeline(const Deployment& dep, const Model& model, State& state, DeploymentState& ds,
-                        DeploymentController& controller, const std::vector<TimedCommand>& timeline, double duration) {
+StepReport advance(const Model& model, State& state) {
+  moveDevice(model, state);
+  return step(model, state);
+}
+
+TimelineRun runTimeline(const Model& model, State& state, const std::vector<TimedCommand>& timeline, double duration) {
   TimelineRun run;
   const double dt = model.timeStep;
   const long steps = long(std::llround(duration / dt));
@@ -121,14 +134,13 @@ TimelineRun runTimeline(const Deployment& dep, const Model& model, State& state,
   for (long s = 0; s < steps; ++s) {
     const double t = s * dt;
     while (next < timeline.size() && timeline[next].time <= t + 1e-9 * dt) {
-      const std::string why = controller.command(dep, ds, timeline[next].command);
+      const std::string why = command(model, state, timeline[next].command);
       if (!why.empty()) run.log.push_back("t = " + std::to_string(timeline[next].time) + " s: " + why);
       ++next;
     }
-    controller.advance(dep, model, state, ds, dt);
-    for (const std::string& n : controller.notes) run.log.push_back("t = " + std::to_string(t) + " s: " + n);
-    controller.notes.clear();
-    const StepReport rep = step(model, state);
+    const StepReport rep = advance(model, state);
+    for (const std::string& n : state.device.notes) run.log.push_back("t = " + std::to_string(t) + " s: " + n);
+    state.device.notes.clear();
     ++run.steps;
     if (!rep.ok()) {
       run.log.push_back("t = " + std::to_string(t) + " s: step refused: " + rep.message);

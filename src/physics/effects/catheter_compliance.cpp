@@ -1,11 +1,16 @@
-// catheter_compliance: the tip node on a cantilever spring (see effects.h).
-#include <mutex>
-
+// catheter_compliance: the flexible free catheter segment at the tip, a
+// cantilever of length L_c and bending stiffness EI_c carrying the coil's
+// tip node instead of the rigid clamp. Its end stiffness (Euler-Bernoulli
+// cantilever, end load and moment) in the tip frame (x along the exit
+// direction):
+//   (v, theta_z): EI/L^3 [[12, -6L], [-6L, 4L^2]],  (w, theta_y): EI/L^3 [[12, 6L], [6L, 4L^2]],
+// with axial and torsional stiffness 100 times the lateral scale (the
+// catheter neither stretches nor twists appreciably).
+#include "physics/effects/builtin.h"
 #include "physics/model.h"
 #include "physics/state.h"
-#include "validation/effects.h"
 
-namespace coilsim::validation {
+namespace coilsim {
 namespace {
 
 constexpr ParamSpec kParams[] = {
@@ -13,6 +18,9 @@ constexpr ParamSpec kParams[] = {
     {"bending_stiffness_n_mm2", "N mm2", "bending stiffness EI of that segment (with the coil inside)", 10.0, 1e-3, 1e6,
      1e-6},
 };
+
+constexpr size_t kLength = paramIndex(kParams, "segment_length_mm");
+constexpr size_t kBending = paramIndex(kParams, "bending_stiffness_n_mm2");
 
 class CatheterCompliance final : public Effect {
  public:
@@ -24,7 +32,7 @@ class CatheterCompliance final : public Effect {
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
     if (c.rod.role != RodRole::Coil || c.state.activeNodes < 1 || c.rod.constraints.empty()) return;
     if (c.rod.constraints[0].node != 0 || c.rod.constraints[0].mask != kFreeDofs) return;  // still clamped
-    const double L = p[0], EI = p[1];
+    const double L = p[kLength], EI = p[kBending];
     const double k = EI / (L * L * L);
     Mat6 K = Mat6::Zero();  // local: (dx, dy, dz, rx, ry, rz)
     K(1, 1) = K(2, 2) = 12 * k;
@@ -45,23 +53,15 @@ class CatheterCompliance final : public Effect {
     out.stiffness[0] += Kg;
     out.touchedMatrix = true;
   }
+  // Off is the stiffest segment the bounds allow (rigid to well below a
+  // micron); plausible: polymer tubes of 0.5-0.7 mm with a coil inside.
+  std::optional<Diagnosable> diagnosis(const SetupHint&) const override {
+    return Diagnosable{{{kParams[kBending].name, 1e6 * 1e-6, 10.0 * 1e-6, 0.5e-6, 100e-6}}, {}, true};
+  }
 };
 
 }  // namespace
 
 std::unique_ptr<Effect> makeCatheterComplianceEffect() { return std::make_unique<CatheterCompliance>(); }
 
-void ensureValidationEffects() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    if (!EffectRegistry::global().find("catheter_compliance"))
-      EffectRegistry::global().add(makeCatheterComplianceEffect());
-    // A physics built-in (src/physics/effects/gravity_tilt.cpp); added here
-    // too in case builtin.cpp does not list it.
-    if (!EffectRegistry::global().find("gravity_tilt")) EffectRegistry::global().add(makeGravityTiltEffect());
-  });
-}
-
-bool releasesClamp(const EffectUse& use) { return use.effect && use.name() == "catheter_compliance"; }
-
-}  // namespace coilsim::validation
+}  // namespace coilsim
