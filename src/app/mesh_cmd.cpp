@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <exception>
 
-#include "app/run_scene.h"
+#include "app/exit_codes.h"
 #include "io/json_reader.h"
 #include "io/mesh_file.h"
 

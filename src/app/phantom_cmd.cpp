@@ -6,7 +6,7 @@
 #include <exception>
 #include <filesystem>
 
-#include "app/run_scene.h"
+#include "app/exit_codes.h"
 #include "geometry/mesh_report.h"
 #include "geometry/phantom.h"
 #include "geometry/volume.h"

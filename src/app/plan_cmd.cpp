@@ -10,7 +10,7 @@
 #include <optional>
 #include <sstream>
 
-#include "app/run_scene.h"
+#include "app/exit_codes.h"
 #include "io/json_writer.h"
 #include "io/units.h"
 #include "planning/case_file.h"

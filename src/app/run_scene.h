@@ -4,12 +4,9 @@
 #include <optional>
 #include <string>
 
-namespace coilsim::app {
+#include "app/exit_codes.h"
 
-// Process exit codes of every coilsim command.
-inline constexpr int kExitOk = 0;
-inline constexpr int kExitFailure = 1;  // the simulation failed (step refused, static not converged) or rendering did
-inline constexpr int kExitUsage = 2;    // bad command line or bad input file
+namespace coilsim::app {
 
 struct RunOptions {
   std::string scene;
