@@ -51,12 +51,10 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
 // with EI in a given geometry (its elastic forces do; so does the load at
 // which a wire pushed end-on buckles, pi^2 EI / (4 l^2)), and the
 // penetration, load / stiffness, must stay a fraction of r: so the
-// stiffness scales with EI / r. The paper's 0.356 mm wire (EI 94 N mm^2,
-// EI / r 265 N mm), pushed end-on into a sac, went 177 um (50 % of r) into
-// a 200 N/mm^2 wall, where the cavity test's 0.15 mm wire (EI / r 19.9 N mm)
-// stays within 3 % of r. Below `stiffness` (the scenes' soft coils, EI / r
-// 0.019 N mm) the loads that matter are jolts (a node inserted at the
-// catheter tip shakes the coil), not the wire's elasticity.
+// stiffness scales with EI / r (the measurements behind this:
+// docs/contact.md, "The wall's stiffness scales with the wire"). Below
+// `stiffness` (soft coils) the loads that matter are jolts (a node inserted
+// at the catheter tip shakes the coil), not the wire's elasticity.
 double wallStiffness(double stiffness, double rigidityScale, const RodModel& rod);
 
 // Capsule pairs through a uniform grid over all segments (O(n) for a coil,

@@ -275,9 +275,8 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
           // L^2 / 2R off at the far node (36 um for a 0.5 mm segment in a
           // 7 mm sac), a free end node has no other segment whose planes
           // would bound it, and a node sliding along a plane tilted from
-          // the wall under it goes in by the slide times the tilt: a soft
-          // coil's tip went 17-44 um into the sac while its planes said it
-          // was 20-70 um clear. A node gets the plane of its own nearest
+          // the wall under it goes in by the slide times the tilt (a soft
+          // coil's free tip did, docs/contact.md). A node gets the plane of its own nearest
           // feature, pressing that node only, unless a listed plane agrees
           // with it within kNodePlane over the slide the end-of-step check
           // lets pass unchecked (the margin and its tolerance).

@@ -9,10 +9,9 @@
 //    length of rod, L the segment length), so a segment lying on the wall
 //    carries k per length exactly, a node shared by two touching segments
 //    carries k times its Voronoi length, and the force on a node depends on
-//    that node only: the diagonal stiffness block IS the exact Jacobian. (An
-//    earlier law, k L times the deeper end's penetration shared by the
-//    centroid, made one node's force depend on the other node: a coupling the
-//    diagonal blocks cannot hold, neutrally stable at best.) A contact with
+//    that node only: the diagonal stiffness block IS the exact Jacobian (a
+//    law coupling the two nodes would need blocks the diagonal cannot hold;
+//    docs/contact.md). A contact with
 //    ContactPoint::node >= 0 is a node's own nearest plane and presses that
 //    node only (detect.h). A node that a Newton iterate carried into its
 //    plane stays in the step's solve like a closing one (pressed).
@@ -23,12 +22,11 @@
 //  - Damping c = 2 zeta sqrt(k m) along the normal (per node for walls).
 //    k n n^T and c n n^T go into the implicit matrix, which is what keeps a
 //    stiff penalty from jittering at 1 ms steps.
-//  - Speculative contacts (why the coil did not tunnel at 0.6 m/s): a
-//    linearly implicit step only resists what is in its matrix, so a contact
-//    that does not touch at the start of the step is invisible to it, and a
-//    loop snapping through at 0.6 m/s (0.6 mm per 1 ms step, four wire
-//    radii) went 0.18 mm into the wall before the next step saw it.
-//    Detection therefore searches the swept reach (margin + h |v|) and marks
+//  - Speculative contacts: a linearly implicit step only resists what is in
+//    its matrix, so a contact that does not touch at the start of the step
+//    is invisible to it, and a fast loop (0.6 m/s is four wire radii per
+//    1 ms step) would tunnel into the wall before the next step saw it
+//    (measured in docs/contact.md). Detection therefore searches the swept reach (margin + h |v|) and marks
 //    a contact `closing` when the start-of-step velocity would carry it into
 //    touch within the step; a closing node that does not touch yet gets the
 //    penalty's stiffness but no force (a barrier at its start position), so
