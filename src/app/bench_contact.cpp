@@ -80,7 +80,7 @@ void benchContactFigures(const std::function<void(const std::string&, double)>& 
       scratch = s;
       auto t0 = Clock::now();
       for (const EffectUse& u : model.effects)
-        if (u.enabled && isContact(u)) u.effect->beginStep(model, u.values, scratch);
+        if (u.enabled && isContact(u)) u.effect->beginStep(model, u.values, scratch, model.timeStep);
       detect += microseconds(t0);
       // The baseline is the same deployment run without contacts (in free
       // space), at the same pushed length: taken from this state, a coil

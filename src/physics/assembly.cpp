@@ -7,12 +7,12 @@ namespace coilsim {
 double assembleRod(const Model& model, int rodIndex, RodState& rod, double time, double loadFactor, bool withTangent) {
   TangentRequest t;
   if (withTangent) t.matrix = &rod.work.stiffness;
-  return assembleRodInto(model, rodIndex, rod, time, loadFactor, t);
+  return assembleRodInto(model, rodIndex, rod, time, model.timeStep, loadFactor, t);
 }
 
 namespace {
 
-double assemble(const Model& model, int rodIndex, RodState& rod, double time, double loadFactor,
+double assemble(const Model& model, int rodIndex, RodState& rod, double time, double h, double loadFactor,
                 const TangentRequest& tangent, std::vector<NodeCoupling>* coupling) {
   const RodModel& rm = model.rods[rodIndex];
   RodWorkspace& w = rod.work;
@@ -48,7 +48,7 @@ double assemble(const Model& model, int rodIndex, RodState& rod, double time, do
     w.force[l.node].tail<3>() += loadFactor * l.moment;
   }
   RodForces out{w.force, w.effectK, w.effectD, w.effectsTouchedMatrix, coupling};
-  const EffectContext ctx{model, rm, rod, time, loadFactor};
+  const EffectContext ctx{model, rm, rod, time, loadFactor, h, coupling ? SolveKind::Static : SolveKind::Dynamic};
   for (const EffectUse& u : model.effects)
     if (u.enabled) u.effect->apply(ctx, u.values, out);
   return energy;
@@ -56,15 +56,16 @@ double assemble(const Model& model, int rodIndex, RodState& rod, double time, do
 
 }  // namespace
 
-double assembleRodInto(const Model& model, int rodIndex, RodState& rod, double time, double loadFactor,
+double assembleRodInto(const Model& model, int rodIndex, RodState& rod, double time, double h, double loadFactor,
                        const TangentRequest& tangent) {
-  return assemble(model, rodIndex, rod, time, loadFactor, tangent, nullptr);
+  return assemble(model, rodIndex, rod, time, h, loadFactor, tangent, nullptr);
 }
 
 double assembleRodStatic(const Model& model, int rodIndex, RodState& rod, double loadFactor,
                          std::vector<NodeCoupling>& coupling) {
   coupling.clear();
-  return assemble(model, rodIndex, rod, 0.0, loadFactor, {}, &coupling);
+  // Contact detection's step length too (the sweep of zero velocities is nothing).
+  return assemble(model, rodIndex, rod, 0.0, model.timeStep, loadFactor, {}, &coupling);
 }
 
 void collectFixedDofs(const RodModel& model, RodState& rod) {

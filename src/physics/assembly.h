@@ -22,12 +22,13 @@ struct TangentRequest {
   std::vector<Vec6>* product = nullptr;          // product = scale K velocity
 };
 
-// assembleRod with the tangent going where `tangent` says instead of work.stiffness.
-double assembleRodInto(const Model& model, int rodIndex, RodState& rod, double time, double loadFactor,
+// assembleRod with the tangent going where `tangent` says instead of
+// work.stiffness, for a dynamic step of length h.
+double assembleRodInto(const Model& model, int rodIndex, RodState& rod, double time, double h, double loadFactor,
                        const TangentRequest& tangent);
 
 // For the static solver: forces at load factor `loadFactor` with the effects
-// told it is a static solve (RodForces::coupling set), no elastic tangent,
+// told it is a static solve (SolveKind::Static, RodForces::coupling set), no elastic tangent,
 // and the effects' couplings between nodes collected in `coupling` (cleared
 // first). Returns the elastic energy (J).
 double assembleRodStatic(const Model& model, int rodIndex, RodState& rod, double loadFactor,

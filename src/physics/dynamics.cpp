@@ -41,10 +41,10 @@ void integratePoses(RodState& r, double h) {
   }
 }
 
-StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, long& iterations) {
+StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, double h, long& iterations) {
   const RodModel& rm = model.rods[rodIndex];
   RodWorkspace& w = r.work;
-  const double h = model.timeStep, a = model.damping.massCoeff, b = model.damping.stiffnessCoeff;
+  const double a = model.damping.massCoeff, b = model.damping.stiffnessCoeff;
   const int n = r.activeNodes;
   collectFixedDofs(rm, r);
   prescribedVelocities(rm, r, h);
@@ -56,7 +56,7 @@ StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, l
     for (int i = 0; i < n; ++i) w.velocity[i] << r.v[i], r.w[i];
     BlockTridiagonal& A = w.system;
     TangentRequest tangent{&A, h * b + h * h, &w.velocity, &w.stiffnessTimesVelocity};
-    assembleRodInto(model, rodIndex, r, time + h, 1.0, tangent);
+    assembleRodInto(model, rodIndex, r, time + h, h, 1.0, tangent);
     // h (b + h) K vel in the first iteration, h b K vel after it.
     const double kRhs = h * (b + (it == 0 ? h : 0.0)) / tangent.scale;
     for (int i = 0; i < n; ++i) {
@@ -116,25 +116,25 @@ void advanceTargets(const Model& model, State& state, double dt) {
 
 namespace {
 
-// One implicit step of model.timeStep from the current state; `detect` runs
-// the effects' per-step preparation (contact detection) first, `verify`
-// asks them afterwards whether the step outran it.
-StepReport attempt(const Model& model, State& state, bool detect, bool verify, long& iterations) {
+// One implicit step of length h from the current state; `detect` runs the
+// effects' per-step preparation (contact detection) first, `verify` asks
+// them afterwards whether the step outran it.
+StepReport attempt(const Model& model, State& state, double h, bool detect, bool verify, long& iterations) {
   for (RodState& r : state.rods) saveStart(r);
-  advanceTargets(model, state, model.timeStep);
+  advanceTargets(model, state, h);
   if (detect)
     for (const EffectUse& u : model.effects)
-      if (u.enabled) u.effect->beginStep(model, u.values, state);
+      if (u.enabled) u.effect->beginStep(model, u.values, state, h);
   StepReport report;
   for (size_t k = 0; k < model.rods.size() && report.ok(); ++k)
-    if (state.rods[k].active) report = stepRod(model, int(k), state.rods[k], state.time, iterations);
+    if (state.rods[k].active) report = stepRod(model, int(k), state.rods[k], state.time, h, iterations);
   if (report.ok()) {
     const std::string problem = checkHealth(model, state);
     if (!problem.empty()) report = {StepStatus::BlowUp, problem};
   }
   for (size_t k = 0; k < model.effects.size() && verify && report.ok(); ++k)
     if (model.effects[k].enabled) {
-      std::string missed = model.effects[k].effect->endStep(model, model.effects[k].values, state);
+      std::string missed = model.effects[k].effect->endStep(model, model.effects[k].values, state, h);
       if (!missed.empty()) report = {StepStatus::Missed, std::move(missed)};
     }
   return report;
@@ -155,14 +155,13 @@ constexpr int kMaxParts = 64;
 StepReport retryInSubsteps(const Model& model, State& state, const Snapshot& start, long& iterations) {
   StepReport report;
   for (int parts = 2; parts <= kMaxParts; parts *= 2) {
-    Model fine = model;
-    fine.timeStep = model.timeStep / parts;
+    const double h = model.timeStep / parts;
     report = {};
     for (int p = 0; p < parts && report.ok(); ++p) {
       // The contacts found at the start of the interval still hold for the first substep.
       // The finest split is kept even if an effect says it outran its preparation.
-      report = attempt(fine, state, p > 0, parts < kMaxParts, iterations);
-      state.time += fine.timeStep;
+      report = attempt(model, state, h, p > 0, parts < kMaxParts, iterations);
+      state.time += h;
     }
     state.time = start.time;  // step() adds the whole interval
     if (report.ok()) return report;
@@ -203,7 +202,7 @@ void recordWallPenetration(const Model& model, State& state) {
 StepReport step(const Model& model, State& state) {
   const auto start = std::chrono::steady_clock::now();
   long iterations = 0;
-  StepReport report = attempt(model, state, true, true, iterations);
+  StepReport report = attempt(model, state, model.timeStep, true, true, iterations);
   if (!report.ok()) {
     for (RodState& r : state.rods) restoreStart(r);
     Snapshot snapshot{state.rods, state.time};

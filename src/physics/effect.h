@@ -24,6 +24,13 @@ struct RodModel;
 struct RodState;
 struct State;
 
+// What kind of solve an effect contributes to. A static solve has zero
+// velocities and no step; contacts then act without friction or damping
+// (with Coulomb friction an equilibrium depends on the path that led to it,
+// which a static solve does not follow) and may couple distant nodes
+// (RodForces::coupling).
+enum class SolveKind { Dynamic, Static };
+
 // What an effect reads for one rod.
 struct EffectContext {
   const Model& model;
@@ -31,6 +38,8 @@ struct EffectContext {
   const RodState& state;
   double time = 0;        // s
   double loadFactor = 1;  // static continuation scales external effects by this
+  double timeStep = 0;    // s, the step being taken (a substep's when a step is split)
+  SolveKind solve = SolveKind::Dynamic;
 };
 
 // Stiffness between two nodes of one rod that are not neighbours (a contact
@@ -47,14 +56,10 @@ struct RodForces {
   std::vector<Mat6>& stiffness;  // -d force / d (position, rotation), added to the implicit matrix
   std::vector<Mat6>& damping;    // -d force / d (velocity, angular velocity)
   bool& touchedMatrix;           // set true when writing stiffness or damping
-  // Set only by the static solver (solveStatic), which solves with a
-  // general sparse factorisation when there are any couplings: effects may
-  // read it as "this is a static solve" (zero velocities, no step length;
-  // contacts then act without friction or damping, since with Coulomb
-  // friction an equilibrium depends on the path that led to it, which a
-  // static solve does not follow). A dynamic step's block-tridiagonal solve
-  // holds neighbours only: nullptr, and contacts lump what they can onto
-  // the diagonal blocks.
+  // Stiffness between distant nodes, set in a static solve only (solveStatic
+  // solves with a general sparse factorisation when there are any). A
+  // dynamic step's block-tridiagonal solve holds neighbours only: nullptr,
+  // and contacts lump what they can onto the diagonal blocks.
   std::vector<NodeCoupling>* coupling = nullptr;
 };
 
@@ -94,16 +99,17 @@ class Effect {
   virtual void apply(const EffectContext& ctx, std::span<const double> values, RodForces& out) const = 0;
   // Potential energy of a conservative effect (J), for energy bookkeeping.
   virtual double energy(const EffectContext&, std::span<const double>) const { return 0; }
-  // Called once at the start of each dynamic step, before any rod is
-  // assembled, for effects that look at all rods together (contact
-  // detection); they keep what they find in the State. Default: nothing.
-  virtual void beginStep(const Model&, std::span<const double>, State&) const {}
+  // Called once at the start of each dynamic step (of length h: a
+  // substep's when a step is split), before any rod is assembled, for
+  // effects that look at all rods together (contact detection); they keep
+  // what they find in the State. Default: nothing.
+  virtual void beginStep(const Model&, std::span<const double>, State&, double /*h*/) const {}
   // Called after every rod has been stepped, for effects whose beginStep
   // prepared what the step's own motion can outrun (a contact reached
   // within the step that was not in its implicit solve). A non-empty answer
   // says what was missed, and the step is taken again in substeps, each
   // with its own beginStep. Default: nothing missed.
-  virtual std::string endStep(const Model&, std::span<const double>, const State&) const { return {}; }
+  virtual std::string endStep(const Model&, std::span<const double>, const State&, double /*h*/) const { return {}; }
   // The largest fraction in (0, 1] of a proposed static Newton update of rod
   // `rod` (dx: one position change per active node) that this effect
   // accepts: contacts refuse updates that would carry one segment through

@@ -58,7 +58,7 @@ Energy computeEnergy(const Model& model, const State& state) {
       evalBeam(r.beams[e], r.x[e], r.q[e], r.x[e + 1], r.q[e + 1], false, ev);
       en.elastic += ev.energy;
     }
-    const EffectContext ctx{model, rm, r, state.time, 1.0};
+    const EffectContext ctx{model, rm, r, state.time, 1.0, model.timeStep};
     for (const EffectUse& u : model.effects)
       if (u.enabled) en.potential += u.effect->energy(ctx, u.values);
     for (const NodalLoad& l : rm.loads)

@@ -7,6 +7,7 @@
 
 #include "physics/block_tridiagonal.h"
 #include "physics/contact/contact_state.h"
+#include "physics/contact/scratch.h"
 #include "physics/model.h"
 #include "physics/math.h"
 
@@ -77,6 +78,9 @@ struct State {
   long blowups = 0;                   // steps refused because the result was not healthy
   long substepped = 0;                // steps that were healthy only in substeps (dynamics.cpp)
   std::vector<std::string> warnings;  // each reported once
+  // Contact detection's scratch; mutable because the end-of-step checks and
+  // the static update limits query the wall from a const State.
+  mutable ContactScratch contactScratch;
 };
 
 // A State at rest in the model's rest shape, constraint targets at the rest

@@ -151,7 +151,7 @@ bool solveCoupled(GeneralTridiagonal& K, const std::vector<NodeCoupling>& coupli
 // against where the other was.
 void assembleAt(const Model& model, int k, State& state, double lambda, std::vector<NodeCoupling>& coupling) {
   for (const EffectUse& u : model.effects)
-    if (u.enabled) u.effect->beginStep(model, u.values, state);
+    if (u.enabled) u.effect->beginStep(model, u.values, state, model.timeStep);
   assembleRodStatic(model, k, state.rods[k], lambda, coupling);
 }
 

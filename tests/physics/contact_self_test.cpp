@@ -128,13 +128,13 @@ TEST(SelfContactTest, EndOfStepCheckCatchesAPairCrossedWithinTheStep) {
     return state;
   };
   State deep = cross(0.1e-3);
-  const std::string missed = use.effect->endStep(model, use.values, deep);
+  const std::string missed = use.effect->endStep(model, use.values, deep, model.timeStep);
   EXPECT_NE(missed.find("segment 2"), std::string::npos) << missed;
   EXPECT_NE(missed.find("segment 8"), std::string::npos) << missed;
-  use.effect->beginStep(model, use.values, deep);  // now the pair is in the step's contacts
-  EXPECT_EQ(use.effect->endStep(model, use.values, deep), "");
+  use.effect->beginStep(model, use.values, deep, model.timeStep);  // now the pair is in the step's contacts
+  EXPECT_EQ(use.effect->endStep(model, use.values, deep, model.timeStep), "");
   State graze = cross(0.29e-3);  // 10 um deep: 3 % of 2 r
-  EXPECT_EQ(use.effect->endStep(model, use.values, graze), "");
+  EXPECT_EQ(use.effect->endStep(model, use.values, graze, model.timeStep), "");
 }
 
 TEST(SelfContactTest, SwitchedOffTheCrossingPassesThrough) {

@@ -42,7 +42,7 @@ inline constexpr double kWallSkin = 0.05;
 // node, and a free end node has no other segment.
 // Catheter rods are rigid and skip wall contact.
 // `law.stiffness` is per length; each rod presses with wallStiffness(law.stiffness, rigidityScale, rod).
-void detectWallContacts(const Model& model, State& state, double margin, const ContactLaw& law,
+void detectWallContacts(const Model& model, State& state, double h, double margin, const ContactLaw& law,
                         double rigidityScale);
 
 // The wall's penalty stiffness per length for `rod`: `stiffness` (N/m per
@@ -63,7 +63,7 @@ double wallStiffness(double stiffness, double rigidityScale, const RodModel& rod
 // that are inactive take no part; pairs of two catheters are skipped, and so
 // are segments that share an end (a deploying coil leaves the catheter tip).
 // `catheterLaw` is used when one side is a catheter.
-void detectRodContacts(const Model& model, State& state, bool sameRod, double margin, const ContactLaw& law,
+void detectRodContacts(const Model& model, State& state, double h, bool sameRod, double margin, const ContactLaw& law,
                        const ContactLaw& catheterLaw);
 
 // A pair contact that was not in a step's implicit solve (apart at the start

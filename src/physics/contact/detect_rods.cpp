@@ -8,11 +8,6 @@
 namespace coilsim {
 namespace {
 
-struct GridSegment {
-  std::uint64_t cell = 0;
-  int rod = 0, segment = 0;
-};
-
 // Integer cell coordinates packed in 21 bits each (about 2 million cells per
 // axis: kilometres at millimetre cells).
 std::uint64_t cellKey(long ix, long iy, long iz) {
@@ -31,7 +26,7 @@ bool takesPart(const RodState& r) { return r.active && r.activeNodes >= 2; }
 // visited. O(n) for a coil, not O(n^2).
 template <class Visit>
 void forEachNearPair(const Model& model, const State& state, bool sameRod, double margin, double sweep, Visit visit) {
-  static thread_local std::vector<GridSegment> grid;
+  std::vector<GridSegment>& grid = state.contactScratch.grid;
   grid.clear();
   double reach = 0;
   for (size_t k = 0; k < state.rods.size(); ++k) {
@@ -87,10 +82,10 @@ bool shareAnEnd(const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1, 
 
 }  // namespace
 
-void detectRodContacts(const Model& model, State& state, bool sameRod, double margin, const ContactLaw& law,
+void detectRodContacts(const Model& model, State& state, double h, bool sameRod, double margin, const ContactLaw& law,
                        const ContactLaw& catheterLaw) {
   // Fresh lists for this step: the old ones move to a per-rod previous buffer.
-  static thread_local std::vector<std::vector<ContactPoint>> previous;
+  std::vector<std::vector<ContactPoint>>& previous = state.contactScratch.previous;
   previous.resize(state.rods.size());
   for (size_t k = 0; k < state.rods.size(); ++k) {
     std::vector<ContactPoint>& list = sameRod ? state.rods[k].contact.self : state.rods[k].contact.rod;
@@ -105,7 +100,6 @@ void detectRodContacts(const Model& model, State& state, bool sameRod, double ma
   }
   // The reach includes what a segment sweeps in the step at its start
   // velocity, so a pair that would meet within the step is found (response.h).
-  const double h = model.timeStep;
   forEachNearPair(model, state, sameRod, margin, h, [&](int ki, int si, int kj, int sj) {
     const RodState &ri = state.rods[ki], &rj = state.rods[kj];
     const Vec3 &a0 = ri.x[si], &a1 = ri.x[si + 1], &b0 = rj.x[sj], &b1 = rj.x[sj + 1];
@@ -218,7 +212,7 @@ double safeStaticFraction(const State& state, int rod, std::span<const Vec3> dx,
   if (!takesPart(r) || !(radiusScale > 0)) return 1.0;
   const int n = r.activeNodes;
   // Each segment: how far it moves at most (as far as its farther node).
-  static thread_local std::vector<double> moves;
+  std::vector<double>& moves = state.contactScratch.moves;
   moves.assign(n - 1, 0.0);
   for (int e = 0; e + 1 < n; ++e) moves[e] = std::max(dx[e].norm(), dx[e + 1].norm());
   double fraction = 1.0;

@@ -15,15 +15,6 @@ struct Nearest {
   size_t candidate = 0;  // its index in the query's candidates
 };
 
-// Closest points of the segment to each candidate triangle (kept for the
-// concave-neighbour pass), in the order of `candidates`; NaN distance when a
-// triangle was skipped because its box is farther than the best so far.
-thread_local std::vector<SegmentTriangle> hits;
-// The same for one node of that segment (nearestToNode).
-thread_local std::vector<SegmentTriangle> nodeHits;
-// Squared distance from the segment's box to each candidate's box: a lower
-// bound of the distance to it from any point of the segment.
-thread_local std::vector<double> boxGap2;
 
 // A node's own nearest wall gets a plane of its own unless one of the
 // segment's planes agrees with it within this fraction of the wire radius
@@ -43,13 +34,20 @@ double boxDistance2(const Vec3& lo1, const Vec3& hi1, const Vec3& lo2, const Vec
 // The nearest triangle feature to segment [a, b] among those whose boxes
 // overlap the segment's box grown by `reach`. A triangle whose own box is
 // farther from the segment's box than the best distance found so far cannot
-// be nearer and is skipped without the exact query.
-Nearest nearestFeature(const ObstacleTree& tree, const Vec3& a, const Vec3& b, double reach, std::vector<int>& stack,
-                       std::vector<int>& candidates) {
+// be nearer and is skipped without the exact query. Leaves in `scratch`
+// the candidates, their closest points to the segment (hits, kept for the
+// concave-neighbour pass; NaN distance where a triangle was skipped because
+// its box is farther than the best so far) and the squared gaps between
+// the boxes (boxGap2, a lower bound of the distance from any point of the
+// segment).
+Nearest nearestFeature(const ObstacleTree& tree, const Vec3& a, const Vec3& b, double reach, ContactScratch& scratch) {
+  std::vector<int>& candidates = scratch.candidates;
+  std::vector<SegmentTriangle>& hits = scratch.hits;
+  std::vector<double>& boxGap2 = scratch.boxGap2;
   const Vec3 grow = Vec3::Constant(reach);
   const Vec3 lo = a.cwiseMin(b), hi = a.cwiseMax(b);
   candidates.clear();
-  tree.overlapping(lo - grow, hi + grow, stack, candidates);
+  tree.overlapping(lo - grow, hi + grow, scratch.stack, candidates);
   hits.resize(candidates.size());
   boxGap2.resize(candidates.size());
   Nearest best;
@@ -105,8 +103,12 @@ Vec3 pseudoNormal(const ObstacleTree& tree, const Nearest& n, const std::vector<
 // to the node than to the segment, so with the segment's nearest triangle
 // measured first, only those the segment found about as near are measured
 // (for a node on a wall, the few under it).
-Nearest nearestToNode(const ObstacleTree& tree, const Vec3& x, double s, const Nearest& segment,
-                      const std::vector<int>& candidates, double reach) {
+Nearest nearestToNode(const ObstacleTree& tree, const Vec3& x, double s, const Nearest& segment, double reach,
+                      ContactScratch& scratch) {
+  const std::vector<int>& candidates = scratch.candidates;
+  const std::vector<SegmentTriangle>& hits = scratch.hits;
+  const std::vector<double>& boxGap2 = scratch.boxGap2;
+  std::vector<SegmentTriangle>& nodeHits = scratch.nodeHits;
   const TriangleMesh& m = tree.mesh();
   nodeHits.resize(candidates.size());
   const auto measure = [&](size_t k) -> const SegmentTriangle& {
@@ -166,10 +168,12 @@ double wallStiffness(double stiffness, double rigidityScale, const RodModel& rod
   return std::max(stiffness, rigidityScale * rigidity / r);
 }
 
-void detectWallContacts(const Model& model, State& state, double margin, const ContactLaw& wallLaw,
+void detectWallContacts(const Model& model, State& state, double h, double margin, const ContactLaw& wallLaw,
                         double rigidityScale) {
-  static thread_local std::vector<int> stack, candidates;
-  const double h = model.timeStep;
+  ContactScratch& scratch = state.contactScratch;
+  const std::vector<int>& candidates = scratch.candidates;
+  const std::vector<SegmentTriangle>& hits = scratch.hits;
+  const std::vector<SegmentTriangle>& nodeHits = scratch.nodeHits;
   for (size_t k = 0; k < state.rods.size(); ++k) {
     RodState& r = state.rods[k];
     ContactLaw law = wallLaw;
@@ -203,7 +207,7 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
           if (!model.obstacles[o].contact || o >= model.obstacleTrees.size()) continue;
           const ObstacleTree& tree = *model.obstacleTrees[o];
           // Queried beyond the reach, so the clearance found lasts a while.
-          Nearest n = nearestFeature(tree, a, b, reach + kLookAhead, stack, candidates);
+          Nearest n = nearestFeature(tree, a, b, reach + kLookAhead, scratch);
           clear = std::min(clear, n.triangle < 0 ? reach + kLookAhead : n.hit.distance);
           if (n.triangle < 0 || n.hit.distance > reach) {
             // Nothing near: either free, or pushed wholly through the wall
@@ -211,7 +215,7 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
             ContactPoint probe;
             probe.segment = e, probe.other = int(o);
             if (!findPrevious(rc.previous, probe, r)) continue;
-            n = nearestFeature(tree, a, b, 4 * radius + margin, stack, candidates);
+            n = nearestFeature(tree, a, b, 4 * radius + margin, scratch);
             if (n.triangle < 0) continue;
           }
           const size_t listed = rc.wall.size();
@@ -285,7 +289,7 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
             // The segment's nearest point is this node: the same feature.
             if (n.hit.s == j) continue;
             const Vec3& x = j ? b : a;
-            const Nearest own = nearestToNode(tree, x, j, n, candidates, reach);
+            const Nearest own = nearestToNode(tree, x, j, n, reach, scratch);
             if (own.triangle < 0 || own.hit.distance > reach) continue;
             ContactPoint p = makeContact(tree, own, candidates, nodeHits, e, int(o), radius);
             bool covered = false;
@@ -316,7 +320,9 @@ void detectWallContacts(const Model& model, State& state, double margin, const C
 }
 
 std::string checkWallContacts(const Model& model, const State& state, double margin) {
-  static thread_local std::vector<int> stack, candidates;
+  ContactScratch& scratch = state.contactScratch;
+  const std::vector<int>& candidates = scratch.candidates;
+  const std::vector<SegmentTriangle>& hits = scratch.hits;
   std::string missed;
   double worst = 0;
   for (size_t k = 0; k < state.rods.size(); ++k) {
@@ -355,7 +361,7 @@ std::string checkWallContacts(const Model& model, const State& state, double mar
       for (size_t o = 0; o < model.obstacles.size(); ++o) {
         if (!model.obstacles[o].contact || o >= model.obstacleTrees.size()) continue;
         const ObstacleTree& tree = *model.obstacleTrees[o];
-        const Nearest n = nearestFeature(tree, a, b, 2 * radius, stack, candidates);
+        const Nearest n = nearestFeature(tree, a, b, 2 * radius, scratch);
         if (n.triangle < 0) continue;
         // The planes' penetration is linear along the segment: at the
         // deepest point s they allow (1 - s) known_a + s known_b.

@@ -168,9 +168,11 @@ void applyStatic(std::span<const ContactPoint> contacts, const RodState& rod, co
 
 }  // namespace
 
-void applyContacts(std::span<const ContactPoint> contacts, const RodState& rod, const ContactLaw& law, double h,
+void applyContacts(std::span<const ContactPoint> contacts, const EffectContext& ctx, const ContactLaw& law,
                    RodForces& out, bool sameRod) {
-  if (out.coupling) {
+  const RodState& rod = ctx.state;
+  const double h = ctx.timeStep;
+  if (ctx.solve == SolveKind::Static) {
     applyStatic(contacts, rod, law, sameRod, out);
     return;
   }

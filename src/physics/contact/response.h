@@ -109,14 +109,15 @@ void updateContact(ContactPoint& c, const ContactPoint* previous, const RodState
 // tip), nearest contact point; nullptr if none.
 const ContactPoint* findPrevious(std::span<const ContactPoint> list, const ContactPoint& c, const RodState& rod);
 
-// Adds the forces, stiffness and damping of `contacts` to the rod's arrays
-// for a step of length h. When `out.coupling` is set (a static solve) the
+// Adds the forces, stiffness and damping of `contacts` to the arrays of the
+// context's rod for a step of length ctx.timeStep. In a static solve
+// (ctx.solve, with out.coupling set) the
 // contacts act without friction or damping and give their exact stiffness
 // for fixed contact points and normal, -d f_i / d x_j = k w_i w_j n n^T
 // (w = (1 - s, s) on this segment, -(1 - t, t) on the other), coupling the
 // other segment's nodes too when `sameRod` (self-contact: both sides move in
 // the same solve; another rod is held while this one is solved).
-void applyContacts(std::span<const ContactPoint> contacts, const RodState& rod, const ContactLaw& law, double h,
+void applyContacts(std::span<const ContactPoint> contacts, const EffectContext& ctx, const ContactLaw& law,
                    RodForces& out, bool sameRod = false);
 
 // Sums c.normalForce onto the nodes (per-node report) and returns the largest

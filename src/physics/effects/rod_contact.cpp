@@ -41,10 +41,10 @@ class RodContact final : public Effect {
   std::string_view name() const override { return "rod_contact"; }
   std::string_view description() const override { return "coil-coil and coil-catheter contact, with friction"; }
   std::span<const ParamSpec> params() const override { return kParams; }
-  void beginStep(const Model& model, std::span<const double> p, State& state) const override {
-    detectRodContacts(model, state, false, p[kMargin], coilLaw(p), catheterLaw(p));
+  void beginStep(const Model& model, std::span<const double> p, State& state, double h) const override {
+    detectRodContacts(model, state, h, false, p[kMargin], coilLaw(p), catheterLaw(p));
   }
-  std::string endStep(const Model& model, std::span<const double> p, const State& state) const override {
+  std::string endStep(const Model& model, std::span<const double> p, const State& state, double) const override {
     return checkRodContacts(model, state, false, p[kMargin]);
   }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
@@ -52,7 +52,7 @@ class RodContact final : public Effect {
     const auto& list = c.state.contact.rod;
     for (size_t i = 0; i < list.size(); ++i) {
       const bool withCatheter = c.rod.role == RodRole::Catheter || c.model.rods[list[i].other].role == RodRole::Catheter;
-      applyContacts(std::span(list).subspan(i, 1), c.state, withCatheter ? catheter : coil, c.model.timeStep, out);
+      applyContacts(std::span(list).subspan(i, 1), c, withCatheter ? catheter : coil, out);
     }
   }
   double limitStaticUpdate(const Model&, std::span<const double>, const State& state, int rod,

@@ -36,18 +36,18 @@ class SelfContact final : public Effect {
   std::string_view name() const override { return "self_contact"; }
   std::string_view description() const override { return "non-adjacent segments of one rod, with friction"; }
   std::span<const ParamSpec> params() const override { return kParams; }
-  void beginStep(const Model& model, std::span<const double> p, State& state) const override {
+  void beginStep(const Model& model, std::span<const double> p, State& state, double h) const override {
     const ContactLaw law = lawOf(p);
-    detectRodContacts(model, state, true, p[kMargin], law, law);
+    detectRodContacts(model, state, h, true, p[kMargin], law, law);
   }
   // A loop snapping onto another within one step, from a start where the
   // pair was beyond the margin and not closing, is outside the step's
   // implicit solve: the step is retaken in substeps (as for rod_contact).
-  std::string endStep(const Model& model, std::span<const double> p, const State& state) const override {
+  std::string endStep(const Model& model, std::span<const double> p, const State& state, double) const override {
     return checkRodContacts(model, state, true, p[kMargin], p[kRadiusScale]);
   }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
-    applyContacts(c.state.contact.self, c.state, lawOf(p), c.model.timeStep, out, true);
+    applyContacts(c.state.contact.self, c, lawOf(p), out, true);
   }
   double limitStaticUpdate(const Model&, std::span<const double> p, const State& state, int rod,
                            std::span<const Vec3> dx) const override {

@@ -43,18 +43,18 @@ class WallContact final : public Effect {
   std::string_view name() const override { return "wall_contact"; }
   std::string_view description() const override { return "rods against the obstacle meshes, with friction"; }
   std::span<const ParamSpec> params() const override { return kParams; }
-  void beginStep(const Model& model, std::span<const double> p, State& state) const override {
-    detectWallContacts(model, state, p[kMargin], lawOf(p), p[kPerRigidity]);
+  void beginStep(const Model& model, std::span<const double> p, State& state, double h) const override {
+    detectWallContacts(model, state, h, p[kMargin], lawOf(p), p[kPerRigidity]);
   }
   // A node sliding fast along a curved wall leaves the tangent plane its
   // step was solved with: the step is retaken in substeps (detect.h).
-  std::string endStep(const Model& model, std::span<const double> p, const State& state) const override {
+  std::string endStep(const Model& model, std::span<const double> p, const State& state, double) const override {
     return checkWallContacts(model, state, p[kMargin]);
   }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
     ContactLaw law = lawOf(p);
     law.stiffness = wallStiffness(law.stiffness, p[kPerRigidity], c.rod);
-    applyContacts(c.state.contact.wall, c.state, law, c.model.timeStep, out);
+    applyContacts(c.state.contact.wall, c, law, out);
   }
 };
 

@@ -1,0 +1,35 @@
+#pragma once
+// Scratch of contact detection, kept in the State (State::contactScratch)
+// rather than in thread-local buffers, so that States stepped in parallel
+// (plan candidates, fits) never share it and nothing outlives its run. The
+// vectors grow to the largest query and keep their capacity; their
+// contents are meaningless between calls.
+#include <cstdint>
+#include <vector>
+
+#include "physics/contact/contact_state.h"
+#include "physics/contact/geometry.h"
+
+namespace coilsim {
+
+// A segment in the uniform grid of the pair search (detect_rods.cpp).
+struct GridSegment {
+  std::uint64_t cell = 0;
+  int rod = 0, segment = 0;
+};
+
+struct ContactScratch {
+  // Wall queries (detect_wall.cpp): the tree traversal, the candidate
+  // triangles, the closest points of the segment and of one of its nodes to
+  // each candidate, and the squared gap between their boxes.
+  std::vector<int> stack, candidates;
+  std::vector<SegmentTriangle> hits, nodeHits;
+  std::vector<double> boxGap2;
+  // Pair queries (detect_rods.cpp): the grid, last step's lists per rod
+  // while they are matched, and each segment's largest static move.
+  std::vector<GridSegment> grid;
+  std::vector<std::vector<ContactPoint>> previous;
+  std::vector<double> moves;
+};
+
+}  // namespace coilsim
