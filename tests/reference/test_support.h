@@ -21,3 +21,15 @@ inline Rod fullyDeployed(const RodSpec& spec, SolveReport* rep) {
 }
 
 }  // namespace refrod::testing
+
+namespace refrod::testing {
+
+// Material Darboux vector (kappa1, kappa2, tau) of a helix of loop diameter D
+// and pitch p (m) with d1 the principal normal: (0, kappa, +-tau),
+// kappa = R / (R^2 + c^2), tau = c / (R^2 + c^2), c = p / 2 pi.
+inline Vec3 helixDarboux(double D, double p, bool right) {
+  const double R = D / 2, c = p / (2 * M_PI), den = R * R + c * c;
+  return Vec3(0, R / den, (right ? 1 : -1) * c / den);
+}
+
+}  // namespace refrod::testing
