@@ -126,15 +126,20 @@ void setDeployment(const RodSpec& spec, Rod& rod, double l, double twist) {
   for (int j = rod.key[J + 1] + 1; j <= spec.coilEdges && j * h <= l - 0.5 * h + 1e-9 * h; ++j) {
     const double sNew = l - j * h;
     const double f = sNew / rod.s[J + 1];  // along the first edge, which already spans it
+    // The new node and the two edges beside it start on the rest shape seen
+    // from the junction frame (a chord would bend them by the sagitta and
+    // give Newton, or the dynamics, a needless kick).
+    const Quat F = rod.q[J];
     const auto at = [&](auto& vec, auto val) { vec.insert(vec.begin() + J + 1, val); };
     at(rod.s, sNew);
     at(rod.key, j);
     at(rod.fixed, char(0));
     at(rod.section, 0);
-    at(rod.x, Vec3(rod.x[J] + f * (rod.x[J + 1] - rod.x[J])));
+    at(rod.x, Vec3(rod.x[J] + F * restPosition(spec, sNew)));
     at(rod.v, Vec3(rod.v[J] + f * (rod.v[J + 1] - rod.v[J])));
     at(rod.a, Vec3(rod.a[J] + f * (rod.a[J + 1] - rod.a[J])));
-    at(rod.q, Quat(rod.q[J + 1]));
+    at(rod.q, Quat(F * restFrame(spec, 0.5 * sNew)));
+    rod.q[J + 2] = F * restFrame(spec, 0.5 * (sNew + rod.s[J + 2]));
   }
   rod.deployed = l;
   rod.twist = twist;
@@ -213,6 +218,11 @@ double stretchEnergy(const RodSpec& spec, const Rod& rod, const Dofs& dofs, int 
   const Vec3 gamma0 =
       q0.conjugate() * (restPosition(spec, rod.s[k]) - restPosition(spec, rod.s[k - 1])) / l0;
   const Vec3 dv = rod.x[k] - rod.x[k - 1];
+  const double K[3] = {c.GA, c.GA, c.EA};
+  if (!g && !H) {  // energy only (line search): plain doubles
+    const Vec3 gam = rod.q[k].conjugate() * dv / l0 - gamma0;
+    return 0.5 * l0 * (K[0] * gam[0] * gam[0] + K[1] * gam[1] * gam[1] + K[2] * gam[2] * gam[2]);
+  }
   const Mat3 Rt = rod.q[k].toRotationMatrix().transpose();
   J6 d[3] = {J6::variable(0, dv.x()), J6::variable(1, dv.y()), J6::variable(2, dv.z())};
   J6 w[3] = {J6::variable(3, 0), J6::variable(4, 0), J6::variable(5, 0)};
@@ -225,7 +235,6 @@ double stretchEnergy(const RodSpec& spec, const Rod& rod, const Dofs& dofs, int 
   cross(w, d, wd);
   cross(w, wd, wwd);
   for (int i = 0; i < 3; ++i) cd[i] = d[i] + cf * (0.5 * wwd[i] - wd[i]);
-  const double K[3] = {c.GA, c.GA, c.EA};
   J6 e;
   for (int i = 0; i < 3; ++i) {
     const J6 gi = (1.0 / l0) * (Rt(i, 0) * cd[0] + Rt(i, 1) * cd[1] + Rt(i, 2) * cd[2]) - gamma0[i];
@@ -251,6 +260,14 @@ double bendEnergy(const RodSpec& spec, const Rod& rod, const Dofs& dofs, int k, 
   Quat r0 = restFrame(spec, frameS(rod, k)).conjugate() * restFrame(spec, frameS(rod, k + 1));
   if (r0.w() < 0) r0.coeffs() *= -1;
   const Vec3 kappa0 = 2 * r0.vec() / D;
+  if (!g && !H) {  // energy only (line search): plain doubles
+    Quat r = rod.q[k].conjugate() * rod.q[k + 1];
+    if (r.w() < 0) r.coeffs() *= -1;
+    const Vec3 dk = 2 * r.vec() / D - kappa0;
+    double e = 0;
+    for (int i = 0; i < 3; ++i) e += 0.5 * D * D / (0.5 * la / Ka[i] + 0.5 * lb / Kb[i]) * dk[i] * dk[i];
+    return e;
+  }
   const auto Ca = cayley(0), Cb = cayley(3);
   const Q<J6> CaConj{Ca.w, -Ca.x, -Ca.y, -Ca.z};
   const Q<double> qa = toQ(rod.q[k]), qaConj{qa.w, -qa.x, -qa.y, -qa.z}, qb = toQ(rod.q[k + 1]);

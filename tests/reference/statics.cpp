@@ -110,21 +110,27 @@ SolveReport minimise(const RodSpec& spec, Rod& rod, const Inertia* in, int maxIt
 SolveReport pushStatic(const RodSpec& spec, Rod& rod, double l, double twist, double dl) {
   SolveReport rep;
   const double l0 = rod.deployed, t0 = rod.twist;
-  // The first edge stretches by each increment before Newton restores it: at
-  // most half an edge keeps that strain moderate.
-  dl = std::min(dl, 0.5 * spec.h());
+  // At most one edge per increment: the predictor below then leaves Newton
+  // a small correction, and at most one node is released at a time.
+  dl = std::min(dl, spec.h());
   const int steps = std::max(1, int(std::ceil((l - l0) / dl - 1e-9)));
   for (int i = 1; i <= steps; ++i) {
     const double f = double(i) / steps;
-    // Predictor: the coil outside moves out with the pushed material, as a
-    // whole along the exit direction, so the first edge keeps its length.
-    // Without it the first edge is compressed by the increment and the
-    // stiff, nearly unstable element costs Newton tens of iterations.
+    // Predictor: the deployed coil moves as a whole by the screw motion that
+    // carries the rest shape's frame at s = 0 to s = step (exact for an
+    // unloaded helix or straight rod), so the first edge keeps its length and
+    // Newton only corrects for the changed loads. Without it the first edge
+    // is compressed by the increment and Newton needs tens of iterations.
     const double step = l0 + f * (l - l0) - rod.deployed;
     int J = 0;
     while (rod.key[J + 1] < 0) ++J;
-    const Vec3 d3 = rod.q[J] * Vec3::UnitZ();
-    for (int k = J + 1; k < rod.nodes(); ++k) rod.x[k] += step * d3;
+    const Quat F = rod.q[J];
+    const Quat Q = F * restFrame(spec, step) * F.conjugate();
+    const Vec3 p = rod.x[J], shift = F * restPosition(spec, step);
+    for (int k = J + 1; k < rod.nodes(); ++k) {
+      rod.x[k] = p + shift + Q * (rod.x[k] - p);
+      rod.q[k] = (Q * rod.q[k]).normalized();
+    }
     setDeployment(spec, rod, l0 + f * (l - l0), t0 + f * (twist - t0));
     SolveReport r = minimise(spec, rod);
     rep.iterations += r.iterations;
