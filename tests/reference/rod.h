@@ -114,7 +114,7 @@ double elasticEnergy(const RodSpec& spec, const Rod& rod, const Dofs& dofs, Eige
 // Self-contact energy (contact.cpp), same conventions; 0 if spec.contact is off.
 double contactEnergy(const RodSpec& spec, const Rod& rod, const Dofs& dofs, Eigen::VectorXd* g, Triplets* H);
 
-// Lumped node masses (kg) and drag lengths (m) of the current layout.
+// Lumped node masses (kg) of the current layout: half of each adjacent edge.
 std::vector<double> nodeMasses(const RodSpec& spec, const Rod& rod);
 
 // Applies a step: positions += p, frames turned by the Cayley rotation of p.

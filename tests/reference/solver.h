@@ -39,7 +39,9 @@ double totalEnergy(const RodSpec& spec, const Rod& rod, const Dofs& dofs, const 
                    Eigen::VectorXd* g, Triplets* H);
 
 // A slow push: continues the equilibrium from the rod's deployed length and
-// twist to (l, twist) in increments of at most dl, one equilibrium each.
+// twist to (l, twist) in increments of at most dl (and at most one edge),
+// one equilibrium each, the deployed coil first moved out along its rest
+// shape. On failure the report names the deployed length.
 SolveReport pushStatic(const RodSpec& spec, Rod& rod, double l, double twist, double dl);
 
 // Equilibrium at (l, twist) reached by a slow push from the shortest deployment.

@@ -139,8 +139,6 @@ SolveReport pushStatic(const RodSpec& spec, Rod& rod, double l, double twist, do
       return rep;
     }
   }
-  // Always finish on an equilibrium, even when nothing moved.
-  if (steps == 0) return minimise(spec, rod);
   rep.converged = true;
   return rep;
 }
