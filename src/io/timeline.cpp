@@ -20,13 +20,25 @@ std::string fmt(double v) {
   return buf;
 }
 
+// What a timeline may ask (docs/input-limits.md). Far beyond any device (a
+// hand pushes at a few mm/s); whether the device allows a command within
+// them is the controller's decision at run time. Beyond them a value is a
+// unit error, and 1e308 mm would overflow once converted.
+constexpr double kMaxTimeS = 3600;           // a command at most an hour in
+constexpr double kMinSpeedMmS = 0.001;       // push, pull, retract: 1 um/s (slower never arrives)
+constexpr double kMaxSpeedMmS = 1000;
+constexpr double kMaxDistanceMm = 10'000;    // 10 m
+constexpr double kMaxTwistRateDegS = 36'000; // 100 turns per second
+constexpr double kMaxTwistAngleDeg = 360'000;
+
 // push, pull, retract: {"speed_mm_s" > 0, "distance_mm" > 0 (optional: until stopped or a limit)}.
 DeviceCommand readLinear(const JsonNode& n, Kind kind) {
   n.allowKeys({"speed_mm_s", "distance_mm"});
   DeviceCommand c;
   c.kind = kind;
-  c.rate = units::mmPerSToMPerS(n.child("speed_mm_s").number(Bounds::positive()));
-  if (auto d = n.optional("distance_mm")) c.amount = units::mmToM(d->number(Bounds::positive()));
+  c.rate = units::mmPerSToMPerS(n.child("speed_mm_s").number(Bounds::closed(kMinSpeedMmS, kMaxSpeedMmS, "mm/s")));
+  if (auto d = n.optional("distance_mm"))
+    c.amount = units::mmToM(d->number(Bounds{0, kMaxDistanceMm, true, false, "mm"}));
   return c;
 }
 
@@ -37,10 +49,11 @@ DeviceCommand readTwist(const JsonNode& n) {
   DeviceCommand c;
   c.kind = Kind::Twist;
   const JsonNode rate = n.child("rate_deg_s");
-  const double r = rate.number(Bounds::any());
+  const double r = rate.number(Bounds::closed(-kMaxTwistRateDegS, kMaxTwistRateDegS, "deg/s"));
   if (r == 0) rate.expected("a finite non-zero number (deg/s; negative turns left-handed)");
   c.rate = units::degPerSToRadPerS(r);
-  if (auto a = n.optional("angle_deg")) c.amount = units::degToRad(a->number(Bounds::positive()));
+  if (auto a = n.optional("angle_deg"))
+    c.amount = units::degToRad(a->number(Bounds{0, kMaxTwistAngleDeg, true, false, "deg"}));
   return c;
 }
 
@@ -50,7 +63,7 @@ TimedCommand readCommand(const JsonNode& n) {
   allowed.insert(allowed.end(), std::begin(kKinds), std::end(kKinds));
   n.allowKeys(allowed);
   TimedCommand t;
-  t.time = n.child("t_s").number(Bounds::nonNegative());
+  t.time = n.child("t_s").number(Bounds::closed(0, kMaxTimeS, "s"));
   std::string_view kind;
   for (std::string_view k : kKinds) {
     if (!n.has(k)) continue;
@@ -83,7 +96,7 @@ std::vector<TimedCommand> parseTimeline(const nlohmann::json& document, const st
   if (auto n = root.optional("name")) (void)n->string();
   if (auto d = root.optional("description")) (void)d->string(true);
   std::vector<TimedCommand> out;
-  for (const JsonNode& item : root.child("commands").items(0, SIZE_MAX, "an array of commands")) {
+  for (const JsonNode& item : root.child("commands").items(0, 100'000, "an array of at most 100000 commands")) {
     out.push_back(readCommand(item));
     // Commands run in file order; a time going back would silently reorder them.
     if (out.size() > 1 && out.back().time < out[out.size() - 2].time)
