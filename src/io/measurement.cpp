@@ -42,11 +42,22 @@ constexpr double kMaxTwistDeg = 36'000;    // |twist| of a stage or a sample: 10
 constexpr double kMaxHistorySpanS = 3600;  // capture time after the first push sample
 constexpr double kMaxCoilLengthMm = 2000;  // a coil (or a bench wire) of 2 m at most
 
+// A number within `bounds` (the format's own message), then at most `highest`
+// (a limit of docs/input-limits.md, with its own message).
+double atMost(const JsonNode& n, const Bounds& bounds, double highest, std::string_view unit) {
+  const double v = n.number(bounds);
+  if (v > highest)
+    n.fail("expected at most " + fmt(highest) + " " + std::string(unit) + ", got " + fmt(v) + " (docs/input-limits.md)");
+  return v;
+}
+
 // Points in mm, at least 2; consecutive points must differ (a centre line or
 // polyline with a zero-length segment has no tangent there).
 std::vector<Vec3> pointsMm(const JsonNode& n, std::string_view what) {
   std::vector<Vec3> out;
-  const std::vector<JsonNode> items = n.items(2, kMaxPoints, what);
+  const std::vector<JsonNode> items = n.items(2, SIZE_MAX, what);
+  if (items.size() > kMaxPoints)
+    n.fail("holds " + std::to_string(items.size()) + " points, more than the limit of " + std::to_string(kMaxPoints));
   for (const JsonNode& p : items) {
     const auto a = p.vec3(Bounds::closed(-kMaxCoords, kMaxCoords, "mm"));
     out.push_back(units::mmToM(1.0) * Vec3(a[0], a[1], a[2]));
@@ -88,8 +99,8 @@ RestShapeDef readRest(const JsonNode& n, double lengthM, double wireRadiusM) {
 validation::CoilDef readCoil(const JsonNode& n) {
   validation::CoilDef c;
   if (!n.isObject()) n.expected("an object describing the coil");
-  c.length = units::mmToM(n.child("length_mm").number(Bounds{0, kMaxCoilLengthMm, true, false, "mm"}));
-  c.wireRadius = units::mmToM(n.child("wire_radius_mm").number(Bounds{0, 5, true, false, "mm"}));
+  c.length = units::mmToM(atMost(n.child("length_mm"), Bounds::positive(), kMaxCoilLengthMm, "mm"));
+  c.wireRadius = units::mmToM(atMost(n.child("wire_radius_mm"), Bounds::positive(), 5, "mm"));
   const double area = M_PI * c.wireRadius * c.wireRadius;
   const auto density = n.optional("density_g_cm3");
   const auto mass = n.optional("mass_g");
@@ -102,9 +113,9 @@ validation::CoilDef readCoil(const JsonNode& n) {
       mass->fail("mass_g and density_g_cm3 disagree by more than 1 % (" + fmt(perLength * c.length * 1e3) + " g vs " +
                  fmt(c.massPerLength * c.length * 1e3) + " g); give one of them");
     const double implied = units::kgm3ToGcm3(perLength / area);
-    if (!(implied >= 0.01 && implied <= 30))
+    if (!(implied >= 1e-3 && implied <= 1000))
       mass->fail("mass_g implies a wire density of " + fmt(implied) +
-                 " g/cm3 (mass / (pi r^2 length)), outside [0.01, 30] g/cm3: check its unit");
+                 " g/cm3 (mass / (pi r^2 length)), outside [0.001, 1000] g/cm3: check its unit");
     c.massPerLength = perLength;
   }
   c.rest = readRest(n.child("rest_shape"), c.length, c.wireRadius);
@@ -130,7 +141,7 @@ Stage readStage(const JsonNode& n, double coilLength, const Vec3& tip) {
   if (auto t = n.optional("twist_deg")) s.twist = units::degToRad(t->number(Bounds::closed(-kMaxTwistDeg, kMaxTwistDeg, "deg")));
   if (auto p = n.optional("point_sigma_mm")) s.pointSigma = units::mmToM(p->number(Bounds::closed(0, 10, "mm")));
   const JsonNode line = n.child("centerline_mm");
-  s.centerline = pointsMm(line, "an array of 2 to 100000 points [x, y, z] in mm, from the catheter tip outward");
+  s.centerline = pointsMm(line, "an array of at least 2 points [x, y, z] in mm, from the catheter tip outward");
   // The deployed coil cannot reach further from the tip than its length
   // (plus 5 % and 1 mm for the fit of the line, and 5 sigma of noise).
   const double reach = 1.05 * s.deployed + units::mmToM(1.0) + 5 * s.pointSigma;
