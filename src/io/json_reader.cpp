@@ -105,6 +105,13 @@ class PathSax {
   }
   bool open(json&& container) {
     const std::string segment = nextSegment();
+    // No coilsim file nests more than a few levels; a file of nothing but
+    // "[[[[..." would otherwise cost memory per level (and a deep destructor).
+    if (stack_.size() >= kMaxJsonDepth) {
+      error = file_ + ": " + pathTo(segment) + ": nested deeper than " + std::to_string(kMaxJsonDepth) +
+              " levels (arrays and objects inside each other)";
+      return false;
+    }
     json* p = place(std::move(container));
     if (!stack_.empty()) segments_.push_back(segment);
     stack_.push_back(p);

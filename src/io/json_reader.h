@@ -25,8 +25,8 @@ class InputError : public std::runtime_error {
 };
 
 // Parses `text`; `file` only labels messages. Throws InputError on malformed
-// JSON (with line and column), on a duplicate key and on a number outside
-// the range of a double (with its JSON path).
+// JSON (with line and column), on a duplicate key, on a number outside the
+// range of a double and on nesting deeper than kMaxJsonDepth (with its JSON path).
 nlohmann::json parseJson(std::string_view text, const std::string& file);
 
 // Reads and parses the file at `path`; throws InputError naming the path if
@@ -37,6 +37,8 @@ nlohmann::json readJsonFile(const std::string& path);
 // The largest input JSON file read (64 MiB): far above any scene, timeline,
 // measurement or session, and small enough to hold in memory.
 inline constexpr size_t kMaxJsonFileBytes = size_t(64) << 20;
+// The deepest nesting of arrays and objects parseJson accepts.
+inline constexpr size_t kMaxJsonDepth = 256;
 
 // The largest magnitude number() accepts (in the file's unit), whatever its
 // bounds: a larger value overflows once converted to SI and multiplied

@@ -152,8 +152,15 @@ bool plyInteger(const std::string& type) { return type.find("float") == std::str
 bool plySigned(const std::string& type) { return type[0] != 'u'; }
 
 void checkPly(const std::string& path, std::string_view data) {
-  const size_t headerEnd = data.find("end_header");
-  if (headerEnd == std::string_view::npos) fail(path, "PLY without \"end_header\"");
+  size_t headerEnd = data.find("\nend_header");
+  if (headerEnd == std::string_view::npos) fail(path, "PLY without an \"end_header\" line");
+  ++headerEnd;
+  // The header is text: a byte that is not (assimp loops forever on some, found by scripts/fuzz).
+  for (size_t i = 0; i < headerEnd; ++i) {
+    const unsigned char c = static_cast<unsigned char>(data[i]);
+    if (!(c == '\n' || c == '\r' || c == '\t' || (c >= 0x20 && c < 0x7f)))
+      fail(path, "PLY header holds a byte that is not text (" + std::to_string(int(c)) + ") at offset " + std::to_string(i));
+  }
   size_t body = data.find('\n', headerEnd);
   if (body == std::string_view::npos) fail(path, "PLY: nothing after \"end_header\"");
   ++body;
@@ -208,6 +215,12 @@ void checkPly(const std::string& path, std::string_view data) {
   if (!haveVertex) fail(path, "PLY without a vertex element");
   if (std::none_of(elements.begin(), elements.end(), [](const PlyElement& e) { return e.name == "face" && e.count > 0; }))
     fail(path, "the file holds no triangles (PLY without faces)");
+  for (const PlyElement& e : elements)
+    if (e.name == "face" &&
+        std::none_of(e.properties.begin(), e.properties.end(), [](const PlyProperty& p) {
+          return p.list && (p.name == "vertex_indices" || p.name == "vertex_index");
+        }))
+      fail(path, "PLY: the face element has no \"vertex_indices\" list");
 
   // Before walking: each record needs at least this many bytes, so a count
   // the file cannot hold is refused without reading it.
@@ -266,7 +279,8 @@ void checkPly(const std::string& path, std::string_view data) {
         if (!value(p.countType, v) || v < 0 || v != std::floor(v))
           fail(path, where + ": list \"" + p.name + "\" has no valid length");
         const size_t n = size_t(v);
-        if (face && n > 0 && n < 3) fail(path, where + ": a face of " + std::to_string(n) + " vertices");
+        // assimp aborts the process on a face of no vertex (found by scripts/fuzz).
+        if (face && n < 3) fail(path, where + ": a face of " + std::to_string(n) + " vertices (a face needs at least 3)");
         if (!ascii && n * size_t(plySize(p.type)) > data.size() - at)
           fail(path, where + ": list \"" + p.name + "\" of " + std::to_string(n) + " values runs past the end of the file");
         for (size_t k = 0; k < n; ++k) {
@@ -324,31 +338,46 @@ void checkOff(const std::string& path, std::string_view data) {
   }
 }
 
-// OBJ: "v" lines and "f" lines whose indices (1-based, or negative counting
-// back from the last vertex so far) must name a vertex of the file.
+// OBJ: "v" lines and "f" lines whose references "v", "v/t", "v//n" or
+// "v/t/n" (1-based, or negative counting back from the last one so far)
+// must name a vertex, texture coordinate and normal of the file.
 void checkObj(const std::string& path, std::string_view data) {
-  size_t total = 0;
-  for (Tokens t(data); !t.atEnd(); t.endLine())
-    if (t.next(true) == "v") ++total;
-  if (total > kMaxMeshVertices)
-    fail(path, "OBJ of " + std::to_string(total) + " vertices, more than the limit of " + std::to_string(kMaxMeshVertices));
-  size_t seen = 0, faces = 0;
+  size_t total[3] = {0, 0, 0};  // v, vt, vn
+  for (Tokens t(data); !t.atEnd(); t.endLine()) {
+    const std::string_view w = t.next(true);
+    total[0] += w == "v", total[1] += w == "vt", total[2] += w == "vn";
+  }
+  if (total[0] > kMaxMeshVertices)
+    fail(path, "OBJ of " + std::to_string(total[0]) + " vertices, more than the limit of " + std::to_string(kMaxMeshVertices));
+  static const char* const kWhat[3] = {"vertex", "texture coordinate", "normal"};
+  size_t seen[3] = {0, 0, 0}, faces = 0;
   for (Tokens t(data); !t.atEnd(); t.endLine()) {
     const size_t line = t.line();
     const std::string_view word = t.next(true);
-    if (word == "v") ++seen;
+    seen[0] += word == "v", seen[1] += word == "vt", seen[2] += word == "vn";
     if (word != "f") continue;
     if (++faces > kMaxMeshTriangles)
       fail(path, "OBJ of more than " + std::to_string(kMaxMeshTriangles) + " faces (the limit)");
     for (std::string_view ref = t.next(true); !ref.empty(); ref = t.next(true)) {
-      long long i = 0;
-      const std::string_view head = ref.substr(0, ref.find('/'));
       const std::string where = "OBJ line " + std::to_string(line) + ", face vertex \"" + std::string(ref) + "\"";
-      if (!toInteger(head, i) || i == 0) fail(path, where + ": expected a vertex index 1, 2, ... or -1, -2, ...");
-      if (i < 0 && -i > (long long)seen)
-        fail(path, where + ": relative vertex index " + std::to_string(i) + " reaches before the first vertex (" +
-                       std::to_string(seen) + " vertices so far)");
-      if (i > 0) checkIndex(path, i - 1, total, "face");
+      std::string_view rest = ref;
+      for (int k = 0; k < 3; ++k) {
+        const size_t slash = rest.find('/');
+        const std::string_view part = rest.substr(0, slash);
+        if (!part.empty() || k == 0) {
+          long long i = 0;
+          if (!toInteger(part, i) || i == 0)
+            fail(path, where + ": expected a " + kWhat[k] + " index 1, 2, ... or -1, -2, ...");
+          if (i < 0 && -i > (long long)seen[k])
+            fail(path, where + ": relative " + kWhat[k] + " index " + std::to_string(i) + " reaches before the first (" +
+                           std::to_string(seen[k]) + " so far)");
+          if (i > 0 && size_t(i) > total[k])
+            fail(path, where + ": " + kWhat[k] + " index " + std::to_string(i) + " is out of range: the file has " +
+                           std::to_string(total[k]));
+        }
+        if (slash == std::string_view::npos) break;
+        rest = rest.substr(slash + 1);
+      }
     }
   }
 }
@@ -394,8 +423,8 @@ MeshInspection inspectMeshFile(const std::string& path, double scaleToMm) {
   // Points and lines are dropped at import: a wall is made of triangles.
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   const aiScene* scene = importer.ReadFile(
-      path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
-                aiProcess_PreTransformVertices);
+      path, aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                aiProcess_SortByPType | aiProcess_PreTransformVertices);
   if (!scene) fail(path, std::string("cannot read the mesh: ") + importer.GetErrorString());
 
   MeshInspection out;

@@ -247,7 +247,10 @@ def scenes():
     # Structure: empty object, array root, nested depth, a BOM, binary junk, duplicate key.
     runs = [("empty-object", "{}", "/format"), ("array-root", "[]", "{file}"), ("null-root", "null", "{file}"),
             ("number-root", "1e999", "{file}"), ("string-root", '"scene"', "{file}"),
-            ("deep-nesting", "[" * 5000 + "]" * 5000, "{file}"), ("bom", "\ufeff" + json.dumps(d), "{file}"),
+            ("deep-nesting", "[" * 5000 + "]" * 5000, "nested deeper"),
+            ("deep-nesting-unclosed", "[" * 3000, "nested deeper"),
+            ("deep-nesting-objects", '{"a":' * 300 + "1" + "}" * 300, "nested deeper"),
+            ("bom", "\ufeff" + json.dumps(d), "{file}"),
             ("binary-junk", bytes(range(256)) * 2, "{file}"), ("nul-byte", '{"format"\x00:1}', "{file}"),
             ("duplicate-key", '{"format":"coilsim-scene/1","format":"coilsim-scene/1"}', "duplicate key"),
             ("bad-utf8", b'{"format":"coilsim-scene/1","name":"\xff\xfe"}', "{file}"),
@@ -376,6 +379,14 @@ def meshes():
     bad("vertex-count-short.ply", ply_ascii(c, nv=9), "{file}")
     bad("binary-truncated.ply", ply_binary(c, cut=50), "{file}")
     bad("binary-list-count-250.ply", ply_binary(c, faces=[[0, 1, 3]] * 11 + [[0] * 250]), "{file}")
+    # Found by scripts/fuzz (libFuzzer): faces of no vertex made assimp abort the process.
+    bad("binary-faces-of-0-vertices.ply", ply_binary(c, faces=[[]] * 12), "face")
+    bad("faces-of-0-vertices.ply", ply_ascii(c, faces=[[]] * 12), "face")
+    bad("face-of-2-vertices.ply", ply_ascii(c, faces=[list(f) for f in t[:-1]] + [[1, 7]]), "face")
+    # Found by scripts/fuzz: a header with binary bytes in a property name made assimp loop forever.
+    bad("header-binary-bytes.ply", ply_ascii(c).encode().replace(b"vertex_indices", b"verte\xff\x00\xde\xff\xff\x7f"),
+        "not text")
+    bad("face-without-indices.ply", ply_ascii(c).replace("vertex_indices", "corners"), "vertex_indices")
     bad("no-end-header.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n", "{file}")
     bad("unknown-format.ply", ply_ascii(c).replace("format ascii 1.0", "format ebcdic 1.0"), "format")
     bad("unknown-property-type.ply", ply_ascii(c).replace("property float x", "property quaternion x"), "{file}")
@@ -399,6 +410,9 @@ def meshes():
     bad("empty.off", "", "{file}")
     # OBJ.
     bad("face-out-of-range.obj", obj_text(c, faces=[[i + 1 for i in f] for f in t[:-1]] + [[1, 2, 99]]), "face")
+    bad("texture-out-of-range.obj", obj_text(c) + "vt 0 0\nf 1/1 2/2 3/1\n", "texture coordinate")
+    bad("normal-out-of-range.obj", obj_text(c) + "vn 0 0 1\nf 1//1 2//1 3//7\n", "normal")
+    bad("face-garbage-ref.obj", obj_text(c) + "f 1 2 x\n", "face")
     bad("face-zero.obj", obj_text(c, faces=[[i + 1 for i in f] for f in t[:-1]] + [[0, 1, 2]]), "face")
     bad("face-negative-beyond.obj", obj_text(c, faces=[[i + 1 for i in f] for f in t[:-1]] + [[-1, -2, -100]]), "face")
     ok("face-negative-relative.obj", obj_text(c, faces=[[i - 8 for i in f] for f in t]))
