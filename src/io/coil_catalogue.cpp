@@ -98,9 +98,10 @@ CoilSpec parseCoil(const nlohmann::json& document, const std::string& file) {
   if (!(c.primaryDiameterMm > 2 * c.wireDiameterMm))
     wd.fail("wire diameter " + fmt(c.wireDiameterMm) + " mm leaves no lumen in a primary coil of " +
             fmt(c.primaryDiameterMm) + " mm (needs primary_diameter_mm > 2 diameter_mm)");
-  c.wireYoungGpa = wire.child("young_modulus_gpa").number(Bounds{0, 1000, true, false, "GPa"});
+  // Wires from polymers (about 1 GPa, 1 g/cm3) to tungsten (411 GPa, 19.3 g/cm3) and platinum (21.45 g/cm3).
+  c.wireYoungGpa = wire.child("young_modulus_gpa").number(Bounds::closed(0.1, 1000, "GPa"));
   c.wirePoisson = wire.child("poisson_ratio").number(Bounds{0, 0.5, false, false, {}});
-  c.wireDensityGcm3 = wire.child("density_g_cm3").number(Bounds{0, 25, true, false, "g/cm3"});
+  c.wireDensityGcm3 = wire.child("density_g_cm3").number(Bounds::closed(0.5, 25, "g/cm3"));
   if (c.loopDiameterMm < 4 * c.primaryDiameterMm)
     root.child("loop_diameter_mm").fail("a loop of " + fmt(c.loopDiameterMm) + " mm is too tight for a primary coil of " +
                                         fmt(c.primaryDiameterMm) + " mm (needs at least 4 primary diameters)");

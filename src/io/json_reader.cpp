@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -104,6 +105,13 @@ class PathSax {
   }
   bool open(json&& container) {
     const std::string segment = nextSegment();
+    // No coilsim file nests more than a few levels; a file of nothing but
+    // "[[[[..." would otherwise cost memory per level (and a deep destructor).
+    if (stack_.size() >= kMaxJsonDepth) {
+      error = file_ + ": " + pathTo(segment) + ": nested deeper than " + std::to_string(kMaxJsonDepth) +
+              " levels (arrays and objects inside each other)";
+      return false;
+    }
     json* p = place(std::move(container));
     if (!stack_.empty()) segments_.push_back(segment);
     stack_.push_back(p);
@@ -178,6 +186,15 @@ nlohmann::json parseJson(std::string_view text, const std::string& file) {
 }
 
 nlohmann::json readJsonFile(const std::string& path) {
+  // Checked before opening: a directory opens as an empty stream, which
+  // would read as "malformed JSON".
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (std::filesystem::is_directory(status)) throw InputError(path + ": is a directory, not a JSON file");
+  if (std::filesystem::is_regular_file(status))
+    if (const auto size = std::filesystem::file_size(path, ec); !ec && size > kMaxJsonFileBytes)
+      throw InputError(path + ": the file holds " + std::to_string(size) + " bytes, more than the " +
+                       std::to_string(kMaxJsonFileBytes) + " an input JSON file may hold");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the file (does it exist and is it readable?)");
   std::ostringstream text;
@@ -273,6 +290,9 @@ double JsonNode::number(const Bounds& bounds) const {
   if (!exists() || !value_->is_number()) expected(bounds.describe());
   const double v = value_->get<double>();
   if (!bounds.contains(v)) expected(bounds.describe());
+  if (std::abs(v) > kMaxMagnitude)
+    expected(bounds.describe() + " of magnitude <= " + formatNumber(kMaxMagnitude) +
+             " (a larger value overflows once converted to SI units)");
   return v;
 }
 

@@ -25,13 +25,26 @@ class InputError : public std::runtime_error {
 };
 
 // Parses `text`; `file` only labels messages. Throws InputError on malformed
-// JSON (with line and column), on a duplicate key and on a number outside
-// the range of a double (with its JSON path).
+// JSON (with line and column), on a duplicate key, on a number outside the
+// range of a double and on nesting deeper than kMaxJsonDepth (with its JSON path).
 nlohmann::json parseJson(std::string_view text, const std::string& file);
 
 // Reads and parses the file at `path`; throws InputError naming the path if
-// it cannot be read, or as parseJson.
+// it is missing, a directory, larger than kMaxJsonFileBytes or cannot be
+// read, or as parseJson.
 nlohmann::json readJsonFile(const std::string& path);
+
+// The largest input JSON file read (64 MiB): far above any scene, timeline,
+// measurement or session, and small enough to hold in memory.
+inline constexpr size_t kMaxJsonFileBytes = size_t(64) << 20;
+// The deepest nesting of arrays and objects parseJson accepts.
+inline constexpr size_t kMaxJsonDepth = 256;
+
+// The largest magnitude number() accepts (in the file's unit), whatever its
+// bounds: a larger value overflows once converted to SI and multiplied
+// (1e308 GPa -> inf Pa), so it is refused at its JSON path. No physical
+// input of coilsim comes near it.
+inline constexpr double kMaxMagnitude = 1e12;
 
 // Allowed values of a number, in the file's unit, and how to describe them.
 struct Bounds {
@@ -90,7 +103,8 @@ class JsonNode {
   std::vector<JsonNode> items(size_t minSize = 0, size_t maxSize = std::numeric_limits<size_t>::max(),
                               std::string_view what = "an array") const;
 
-  // Scalars; each fails with the expectation when the type or value is wrong.
+  // Scalars; each fails with the expectation when the type or value is wrong
+  // (number(): also when its magnitude exceeds kMaxMagnitude).
   double number(const Bounds& bounds = Bounds::any()) const;
   long integer(long min, long max) const;
   bool boolean() const;

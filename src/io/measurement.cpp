@@ -33,21 +33,53 @@ Vec3 unitVec(const JsonNode& n) {
   return v.normalized();
 }
 
+// Limits of what a bench measurement can hold (docs/input-limits.md): a
+// value beyond them is a typo or a unit error, and would otherwise reach the
+// fit as an ordinary, huge stage error.
+constexpr double kMaxCoords = 1e6;         // |x|, |y|, |z| in mm
+constexpr size_t kMaxPoints = 100'000;     // per centre line or polyline
+constexpr double kMaxTwistDeg = 36'000;    // |twist| of a stage or a sample: 100 turns
+constexpr double kMaxHistorySpanS = 3600;  // capture time after the first push sample
+constexpr double kMaxCoilLengthMm = 2000;  // a coil (or a bench wire) of 2 m at most
+
+// A number within `bounds` (the format's own message), then at most `highest`
+// (a limit of docs/input-limits.md, with its own message).
+double atMost(const JsonNode& n, const Bounds& bounds, double highest, std::string_view unit) {
+  const double v = n.number(bounds);
+  if (v > highest)
+    n.fail("expected at most " + fmt(highest) + " " + std::string(unit) + ", got " + fmt(v) + " (docs/input-limits.md)");
+  return v;
+}
+
+// Points in mm, at least 2; consecutive points must differ (a centre line or
+// polyline with a zero-length segment has no tangent there).
 std::vector<Vec3> pointsMm(const JsonNode& n, std::string_view what) {
   std::vector<Vec3> out;
-  for (const JsonNode& p : n.items(2, SIZE_MAX, what)) out.push_back(units::mmToM(1.0) * vec(p));
+  const std::vector<JsonNode> items = n.items(2, SIZE_MAX, what);
+  if (items.size() > kMaxPoints)
+    n.fail("holds " + std::to_string(items.size()) + " points, more than the limit of " + std::to_string(kMaxPoints));
+  for (const JsonNode& p : items) {
+    const auto a = p.vec3(Bounds::closed(-kMaxCoords, kMaxCoords, "mm"));
+    out.push_back(units::mmToM(1.0) * Vec3(a[0], a[1], a[2]));
+    if (out.size() > 1 && out.back() == out[out.size() - 2])
+      p.fail("expected a point different from the previous one (consecutive points of a line must differ), got the same "
+             "point twice");
+  }
   return out;
 }
 
-RestShapeDef readRest(const JsonNode& n, double lengthM) {
+RestShapeDef readRest(const JsonNode& n, double lengthM, double wireRadiusM) {
   if (!n.isObject()) n.expected("an object with a \"type\": straight, helix or polyline");
   RestShapeDef r;
   const std::string type = n.child("type").oneOf({"straight", "helix", "polyline"});
   if (type == "straight") return r;
   if (type == "helix") {
     r.type = RestShapeDef::Type::Helix;
-    r.loopDiameter = units::mmToM(n.child("loop_diameter_mm").number(Bounds::positive()));
-    r.pitch = units::mmToM(n.child("pitch_mm").number(Bounds::nonNegative()));
+    // A loop cannot be tighter than the wire it is wound from, nor wider than the coil is long.
+    const JsonNode loop = n.child("loop_diameter_mm");
+    r.loopDiameter = units::mmToM(
+        loop.number(Bounds::closed(units::mToMm(2 * wireRadiusM), units::mToMm(lengthM), "mm (from the wire diameter to the coil length)")));
+    r.pitch = units::mmToM(n.child("pitch_mm").number(Bounds::closed(0, units::mToMm(lengthM), "mm (at most the coil length)")));
     r.rightHanded = n.child("handedness").oneOf({"right", "left"}) == "right";
     return r;
   }
@@ -59,30 +91,36 @@ RestShapeDef readRest(const JsonNode& n, double lengthM) {
   if (std::abs(arc - lengthM) > 0.01 * lengthM)
     pts.fail("the polyline is " + fmt(units::mToMm(arc)) + " mm long but /coil/length_mm is " + fmt(units::mToMm(lengthM)) +
              " mm; they must agree within 1 %");
-  if (auto t = n.optional("twist_deg_per_mm")) r.twistPerLength = units::degPerMmToRadPerM(t->number());
+  if (auto t = n.optional("twist_deg_per_mm"))
+    r.twistPerLength = units::degPerMmToRadPerM(t->number(Bounds::closed(-360, 360, "deg/mm")));
   return r;
 }
 
 validation::CoilDef readCoil(const JsonNode& n) {
   validation::CoilDef c;
   if (!n.isObject()) n.expected("an object describing the coil");
-  c.length = units::mmToM(n.child("length_mm").number(Bounds::positive()));
-  c.wireRadius = units::mmToM(n.child("wire_radius_mm").number(Bounds::positive()));
+  c.length = units::mmToM(atMost(n.child("length_mm"), Bounds::positive(), kMaxCoilLengthMm, "mm"));
+  c.wireRadius = units::mmToM(atMost(n.child("wire_radius_mm"), Bounds::positive(), 5, "mm"));
   const double area = M_PI * c.wireRadius * c.wireRadius;
   const auto density = n.optional("density_g_cm3");
   const auto mass = n.optional("mass_g");
   if (!density && !mass) n.child("density_g_cm3").expected("a number > 0 (g/cm3), or \"mass_g\" instead");
-  if (density) c.massPerLength = units::gcm3ToKgm3(density->number(Bounds::positive())) * area;
+  // Densities from air-light foams to the densest metal (osmium, 22.6 g/cm3).
+  if (density) c.massPerLength = units::gcm3ToKgm3(density->number(Bounds{0.01, 30, false, false, "g/cm3"})) * area;
   if (mass) {
     const double perLength = mass->number(Bounds::positive()) * 1e-3 / c.length;  // g -> kg
     if (density && std::abs(perLength - c.massPerLength) > 0.01 * c.massPerLength)
       mass->fail("mass_g and density_g_cm3 disagree by more than 1 % (" + fmt(perLength * c.length * 1e3) + " g vs " +
                  fmt(c.massPerLength * c.length * 1e3) + " g); give one of them");
+    const double implied = units::kgm3ToGcm3(perLength / area);
+    if (!(implied >= 1e-3 && implied <= 1000))
+      mass->fail("mass_g implies a wire density of " + fmt(implied) +
+                 " g/cm3 (mass / (pi r^2 length)), outside [0.001, 1000] g/cm3: check its unit");
     c.massPerLength = perLength;
   }
-  c.rest = readRest(n.child("rest_shape"), c.length);
+  c.rest = readRest(n.child("rest_shape"), c.length, c.wireRadius);
   if (auto e = n.optional("young_modulus_gpa")) {
-    c.youngModulus = units::gpaToPa(e->number(Bounds::positive()));
+    c.youngModulus = units::gpaToPa(e->number(Bounds{0, 1000, true, false, "GPa"}));
     c.hasYoungModulus = true;
   }
   if (auto nu = n.optional("poisson_ratio")) {
@@ -92,7 +130,7 @@ validation::CoilDef readCoil(const JsonNode& n) {
   return c;
 }
 
-Stage readStage(const JsonNode& n, double coilLength) {
+Stage readStage(const JsonNode& n, double coilLength, const Vec3& tip) {
   if (!n.isObject()) n.expected("a stage object");
   Stage s;
   s.name = n.child("name").string();
@@ -100,9 +138,19 @@ Stage readStage(const JsonNode& n, double coilLength) {
   s.deployed = units::mmToM(l.number(Bounds::positive()));
   if (s.deployed > coilLength * (1 + 1e-9))
     l.expected("a deployed length <= the coil length " + fmt(units::mToMm(coilLength)) + " mm");
-  if (auto t = n.optional("twist_deg")) s.twist = units::degToRad(t->number());
-  if (auto p = n.optional("point_sigma_mm")) s.pointSigma = units::mmToM(p->number(Bounds::nonNegative()));
-  s.centerline = pointsMm(n.child("centerline_mm"), "an array of at least 2 points [x, y, z] in mm, from the catheter tip outward");
+  if (auto t = n.optional("twist_deg")) s.twist = units::degToRad(t->number(Bounds::closed(-kMaxTwistDeg, kMaxTwistDeg, "deg")));
+  if (auto p = n.optional("point_sigma_mm")) s.pointSigma = units::mmToM(p->number(Bounds::closed(0, 10, "mm")));
+  const JsonNode line = n.child("centerline_mm");
+  s.centerline = pointsMm(line, "an array of at least 2 points [x, y, z] in mm, from the catheter tip outward");
+  // The deployed coil cannot reach further from the tip than its length
+  // (plus 5 % and 1 mm for the fit of the line, and 5 sigma of noise).
+  const double reach = 1.05 * s.deployed + units::mmToM(1.0) + 5 * s.pointSigma;
+  for (size_t i = 0; i < s.centerline.size(); ++i)
+    if ((s.centerline[i] - tip).norm() > reach)
+      line.child(std::to_string(i)).fail("this point is " + fmt(units::mToMm((s.centerline[i] - tip).norm())) +
+                                         " mm from the catheter tip, but only " + fmt(units::mToMm(s.deployed)) +
+                                         " mm of coil is deployed (the line reaches at most " +
+                                         fmt(units::mToMm(reach)) + " mm); is it in other units or another frame?");
   if (auto h = n.optional("push_history")) {
     double lastTime = -INFINITY;
     for (const JsonNode& e : h->items(1, SIZE_MAX, "an array of [t_s, deployed_length_mm, twist_deg] samples")) {
@@ -110,14 +158,17 @@ Stage readStage(const JsonNode& n, double coilLength) {
       validation::PushSample p;
       p.time = row[0].number();
       if (!(p.time > lastTime)) row[0].expected("a time greater than the previous sample's (" + fmt(lastTime) + " s)");
+      if (!s.pushHistory.empty() && p.time - s.pushHistory.front().time > kMaxHistorySpanS)
+        row[0].expected("a time at most " + fmt(kMaxHistorySpanS) + " s after the first sample (the longest history simulated)");
       lastTime = p.time;
       p.deployed = units::mmToM(row[1].number(Bounds::closed(0, units::mToMm(coilLength), "mm")));
-      p.twist = units::degToRad(row[2].number());
+      p.twist = units::degToRad(row[2].number(Bounds::closed(-kMaxTwistDeg, kMaxTwistDeg, "deg")));
       s.pushHistory.push_back(p);
     }
     const JsonNode c = n.child("capture_time_s");
     if (!c.exists()) c.expected("a capture time in s (required with push_history)");
-    s.captureTime = c.number(Bounds::closed(s.pushHistory.front().time, INFINITY, "s"));
+    // Validate simulates from the first sample to the capture: bounded, as every simulated time.
+    s.captureTime = c.number(Bounds::closed(s.pushHistory.front().time, s.pushHistory.front().time + kMaxHistorySpanS, "s"));
   }
   return s;
 }
@@ -134,15 +185,21 @@ Measurement fromDocument(const nlohmann::json& doc, const std::string& file) {
 
   const JsonNode setup = root.child("setup");
   if (!setup.isObject()) setup.expected("an object with gravity_m_s2 and catheter_tip");
-  m.gravity = vec(setup.child("gravity_m_s2"));
+  {
+    const auto g = setup.child("gravity_m_s2").vec3(Bounds::closed(-100, 100, "m/s2"));  // 10 g at most
+    m.gravity = Vec3(g[0], g[1], g[2]);
+  }
   if (auto med = setup.optional("medium")) {
     if (!med->isObject()) med->expected("an object {\"density_g_cm3\", \"viscosity_pa_s\"}");
-    m.mediumDensity = units::gcm3ToKgm3(med->child("density_g_cm3").number(Bounds::nonNegative()));
-    m.mediumViscosity = med->child("viscosity_pa_s").number(Bounds::nonNegative());
+    m.mediumDensity = units::gcm3ToKgm3(med->child("density_g_cm3").number(Bounds::closed(0, 30, "g/cm3")));
+    m.mediumViscosity = med->child("viscosity_pa_s").number(Bounds::closed(0, 1000, "Pa s"));
   }
   const JsonNode tip = setup.child("catheter_tip");
   if (!tip.isObject()) tip.expected("an object {\"position_mm\", \"direction\", \"reference_normal\"}");
-  m.tip.position = units::mmToM(1.0) * vec(tip.child("position_mm"));
+  {
+    const auto p = tip.child("position_mm").vec3(Bounds::closed(-kMaxCoords, kMaxCoords, "mm"));
+    m.tip.position = units::mmToM(1.0) * Vec3(p[0], p[1], p[2]);
+  }
   m.tip.direction = unitVec(tip.child("direction"));
   const JsonNode normal = tip.child("reference_normal");
   m.tip.normal = unitVec(normal);
@@ -151,7 +208,7 @@ Measurement fromDocument(const nlohmann::json& doc, const std::string& file) {
                     fmt(m.tip.normal.dot(m.tip.direction)));
 
   for (const JsonNode& s : root.child("stages").items(1, SIZE_MAX, "an array of at least one stage"))
-    m.stages.push_back(readStage(s, m.coil.length));
+    m.stages.push_back(readStage(s, m.coil.length, m.tip.position));
   return m;
 }
 

@@ -11,6 +11,16 @@
 
 namespace coilsim::io {
 
+// What a mesh file may hold (docs/input-limits.md). Counts are checked
+// against the header and the bytes the file holds before anything is
+// allocated; the extent keeps out a file in metres (or micrometres) read as
+// millimetres.
+inline constexpr size_t kMaxMeshFileBytes = size_t(512) << 20;  // 512 MiB
+inline constexpr size_t kMaxMeshVertices = 4'000'000;
+inline constexpr size_t kMaxMeshTriangles = 8'000'000;
+inline constexpr double kMinMeshExtentMm = 0.2;   // largest side of the bounding box, at least
+inline constexpr double kMaxMeshExtentMm = 2000;  // and at most (2 m)
+
 // A surface file as read, before anything is refused.
 struct MeshInspection {
   std::string file;
@@ -22,9 +32,15 @@ struct MeshInspection {
 
 // Reads every triangle of the file (assimp: triangulated, identical vertices
 // joined, node transforms applied; points and lines skipped), times
-// `scaleToMm`. Throws InputError naming the file when it is missing,
-// unreadable, of an unknown format or holds no triangle, or the scale is not
-// a finite number > 0.
+// `scaleToMm`. Before assimp reads it, the file's structure is checked
+// (STL, PLY, OFF, OBJ): counts against the header, the limits above and the
+// bytes present; every face index against the vertex count. Throws
+// InputError naming the file (and the element, record and limit) when it is
+// missing, a directory, unreadable, malformed, beyond a limit, of an unknown
+// format or holds no triangle, when a coordinate is not finite, or when the
+// scale is not a finite number > 0. A surface whose bounding box is outside
+// [kMinMeshExtentMm, kMaxMeshExtentMm] is read but marked not usable
+// (repaired.usable false, the reason suggesting the scale).
 MeshInspection inspectMeshFile(const std::string& path, double scaleToMm = 1.0);
 
 // A surface ready for contact and volumes, in metres: read, safely repaired

@@ -9,16 +9,23 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/json_reader.h"
 #include "physics/run.h"
 
 namespace coilsim::io {
 
 inline constexpr const char* kTimelineFormat = "coilsim-timeline/1";
 
-// Reads the commands; times must be >= 0 and non-decreasing. Whether the
-// device allows a command (push beyond the coil, pull after detach) is the
-// controller's decision at run time, not the reader's.
+// Reads the commands; times must be in [0, 3600] s and non-decreasing, at
+// most 100000 commands, speeds in [0.001, 1000] mm/s, distances up to
+// 10000 mm, twist rates up to 36000 deg/s and angles up to 360000 deg
+// (docs/input-limits.md). Whether the device allows a command (push beyond
+// the coil, pull after detach) is the controller's decision at run time,
+// not the reader's.
 std::vector<TimedCommand> parseTimeline(const nlohmann::json& document, const std::string& file);
+// The same for a timeline inside another file (a session's "timeline"):
+// errors name that file and the full JSON path (/timeline/commands/0/...).
+std::vector<TimedCommand> parseTimeline(const JsonNode& timeline);
 
 // readJsonFile + parseTimeline.
 std::vector<TimedCommand> loadTimeline(const std::string& path);
