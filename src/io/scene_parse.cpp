@@ -5,6 +5,7 @@
 #include <string>
 
 #include "io/scene.h"
+#include "physics/rod_quantities.h"
 
 namespace coilsim::io {
 namespace {
@@ -13,6 +14,9 @@ Vec3 toVec3(const std::array<double, 3>& a) { return Vec3(a[0], a[1], a[2]); }
 
 // Bounds of each field, declared once here and quoted in error messages.
 const Bounds kPositive = Bounds::positive();
+// The bounds of a rod quantity (physics/rod_quantities.h), in its edge unit.
+Bounds of(const rodq::Quantity& q) { return {q.spec.min, q.spec.max, q.minOpen, false, q.spec.unit}; }
+double read(const JsonNode& n, const rodq::Quantity& q) { return n.child(q.spec.name).number(of(q)); }
 const Bounds kNonNegative = Bounds::nonNegative();
 const Bounds kAny = Bounds::any();
 
@@ -36,8 +40,8 @@ RestShapeSpec readRestShape(const JsonNode& n) {
   } else if (type == "helix") {
     n.allowKeys({"type", "loop_diameter_mm", "pitch_mm", "handedness"});
     r.type = RestShapeSpec::Type::Helix;
-    r.loopDiameterMm = n.child("loop_diameter_mm").number(kPositive);
-    r.pitchMm = n.child("pitch_mm").number(kNonNegative);
+    r.loopDiameterMm = read(n, rodq::kLoopDiameter);
+    r.pitchMm = read(n, rodq::kPitch);
     r.rightHanded = n.child("handedness").oneOf({"right", "left"}) == "right";
   } else if (type == "polyline") {
     n.allowKeys({"type", "points_mm", "frames", "twist_deg_per_mm"});
@@ -60,10 +64,9 @@ RestShapeSpec readRestShape(const JsonNode& n) {
 MaterialSpec readMaterial(const JsonNode& n) {
   n.allowKeys({"young_modulus_gpa", "poisson_ratio", "density_g_cm3"});
   MaterialSpec m;
-  m.youngModulusGpa = n.child("young_modulus_gpa").number(kPositive);
-  // Isotropic stability: -1 < nu <= 0.5.
-  m.poissonRatio = n.child("poisson_ratio").number({-1.0, 0.5, true, false, {}});
-  m.densityGcm3 = n.child("density_g_cm3").number(kPositive);
+  m.youngModulusGpa = read(n, rodq::kYoungModulus);
+  m.poissonRatio = read(n, rodq::kPoissonRatio);
+  m.densityGcm3 = read(n, rodq::kDensity);
   return m;
 }
 
@@ -73,7 +76,7 @@ SectionSpec readSection(const JsonNode& n) {
   if (n.has("wire_radius_mm")) {
     n.allowKeys({"wire_radius_mm"});
     s.circular = true;
-    s.wireRadiusMm = n.child("wire_radius_mm").number(kPositive);
+    s.wireRadiusMm = read(n, rodq::kWireRadius);
     return s;
   }
   n.allowKeys({"wire_radius_mm", "area_mm2", "inertia_mm4", "torsion_mm4", "shear_factor", "outer_radius_mm"});
@@ -81,11 +84,11 @@ SectionSpec readSection(const JsonNode& n) {
     n.fail("expected {\"wire_radius_mm\"} (solid circular wire) or {\"area_mm2\", \"inertia_mm4\", "
            "\"torsion_mm4\", \"shear_factor\", \"outer_radius_mm\"}");
   s.circular = false;
-  s.areaMm2 = n.child("area_mm2").number(kPositive);
-  s.inertiaMm4 = n.child("inertia_mm4").number(kPositive);
-  s.torsionMm4 = n.child("torsion_mm4").number(kPositive);
-  s.shearFactor = n.child("shear_factor").number(kNonNegative);
-  s.outerRadiusMm = n.child("outer_radius_mm").number(kPositive);
+  s.areaMm2 = read(n, rodq::kArea);
+  s.inertiaMm4 = read(n, rodq::kInertia);
+  s.torsionMm4 = read(n, rodq::kTorsion);
+  s.shearFactor = read(n, rodq::kShearFactor);
+  s.outerRadiusMm = read(n, rodq::kOuterRadius);
   return s;
 }
 
@@ -127,8 +130,8 @@ RodSpec readRod(const JsonNode& n) {
     const std::string s = role->oneOf({"coil", "catheter", "wire"});
     r.role = s == "coil" ? RodRole::Coil : s == "catheter" ? RodRole::Catheter : RodRole::Wire;
   }
-  r.lengthMm = n.child("length_mm").number(kPositive);
-  r.beams = int(n.child("beams").integer(1, 100'000));
+  r.lengthMm = read(n, rodq::kLength);
+  r.beams = int(n.child("beams").integer(1, rodq::kMaxBeams));
   r.rest = readRestShape(n.child("rest_shape"));
   r.material = readMaterial(n.child("material"));
   r.section = readSection(n.child("section"));
@@ -146,8 +149,8 @@ RodSpec readRod(const JsonNode& n) {
 void readCoil(const JsonNode& n, DeploymentSpec& d) {
   n.allowKeys({"name", "length_mm", "beams", "rest_shape", "material", "section"});
   if (auto name = n.optional("name")) d.coilName = name->string();
-  d.lengthMm = n.child("length_mm").number(kPositive);
-  d.beams = int(n.child("beams").integer(2, 100'000));
+  d.lengthMm = read(n, rodq::kLength);
+  d.beams = int(n.child("beams").integer(2, rodq::kMaxBeams));
   d.rest = readRestShape(n.child("rest_shape"));
   d.material = readMaterial(n.child("material"));
   d.section = readSection(n.child("section"));
@@ -212,8 +215,10 @@ DeploymentSpec readDeployment(const JsonNode& n) {
   d.catheter = readCatheter(n.child("catheter"));
   if (auto l = n.optional("initial_deployed_mm")) d.initialDeployedMm = l->number(kNonNegative);
   if (auto t = n.optional("initial_twist_deg")) d.initialTwistDeg = t->number(kAny);
-  if (auto v = n.optional("max_push_speed_mm_s")) d.maxPushSpeedMmS = v->number(kPositive);
-  if (auto w = n.optional("max_twist_rate_deg_s")) d.maxTwistRateDegS = w->number(kPositive);
+  // A hand pushes a few mm/s and twists a few turns a second; these limits
+  // may be set generous, never off.
+  if (auto v = n.optional("max_push_speed_mm_s")) d.maxPushSpeedMmS = v->number({0, 1000, true, false, "mm/s"});
+  if (auto w = n.optional("max_twist_rate_deg_s")) d.maxTwistRateDegS = w->number({0, 36000, true, false, "deg/s"});
   return d;
 }
 
@@ -252,7 +257,8 @@ SceneSpec parseScene(const nlohmann::json& document, const std::string& file) {
   s.file = file;
   s.name = root.has("name") ? root.child("name").string() : fileStem(file);
   if (auto d = root.optional("description")) s.description = d->string(true);
-  s.gravityMS2 = toVec3(root.child("gravity_m_s2").vec3(kAny));
+  // Earth is 9.81; a centrifuge bench might reach a few g: beyond 100 m/s2 is a unit slip.
+  s.gravityMS2 = toVec3(root.child("gravity_m_s2").vec3(Bounds::closed(-100, 100, "m/s2")));
   s.solve = root.child("solve").oneOf({"dynamic", "static"}) == "dynamic" ? SolveMode::Dynamic : SolveMode::Static;
   const bool dynamic = s.solve == SolveMode::Dynamic;
 
@@ -261,7 +267,7 @@ SceneSpec parseScene(const nlohmann::json& document, const std::string& file) {
     if (root.has(key))
       s.warnings.push_back(root.child(key).where() + ": not used by a " + (dynamic ? "dynamic" : "static") + " solve");
   };
-  if (dynamic || root.has("time_step_s")) s.timeStepS = root.child("time_step_s").number({0, 1, true, false, "s"});
+  if (dynamic || root.has("time_step_s")) s.timeStepS = root.child("time_step_s").number({0, rodq::kMaxTimeStepS, true, false, "s"});
   if (dynamic || root.has("duration_s")) s.durationS = root.child("duration_s").number(kPositive);
   if (auto it = root.optional("newton_iterations")) s.newtonIterations = int(it->integer(1, 100));
   if (auto d = root.optional("damping")) {

@@ -107,7 +107,7 @@ TEST(Cli, BadSceneExits2NamingFileAndPath) {
   std::ofstream(bad) << doc.dump(2);
   const Exec r = coilsim({"run", bad.string(), "--headless", "--out", (dir / "r.json").string()}, dir);
   EXPECT_EQ(r.code, 2);
-  EXPECT_CONTAINS(r.err, bad.string() + ": /rods/0/material/young_modulus_gpa: expected a finite number > 0, got \"abc\"");
+  EXPECT_CONTAINS(r.err, bad.string() + ": /rods/0/material/young_modulus_gpa: expected a finite number in [0.1, 1000] GPa, got \"abc\"");
   EXPECT_FALSE(fs::exists(dir / "r.json"));
 }
 

@@ -110,8 +110,8 @@ TEST(SceneDeployment, CoilReusesTheRodReadersAndTheirMessages) {
   EXPECT_CONTAINS(errorWith("/deployment/coil/material/young_modulus", 7.5),
                   "/deployment/coil/material/young_modulus: unknown key (did you mean \"young_modulus_gpa\"?)");
   EXPECT_CONTAINS(errorWith("/deployment/coil/section", nlohmann::json::object()), "/deployment/coil/section: expected");
-  EXPECT_CONTAINS(errorWith("/deployment/coil/beams", 1), "/deployment/coil/beams: expected an integer in [2, 100000], got 1");
-  EXPECT_CONTAINS(errorWith("/deployment/coil/length_mm", -30), "/deployment/coil/length_mm: expected a finite number > 0");
+  EXPECT_CONTAINS(errorWith("/deployment/coil/beams", 1), "/deployment/coil/beams: expected an integer in [2, 20000], got 1");
+  EXPECT_CONTAINS(errorWith("/deployment/coil/length_mm", -30), "/deployment/coil/length_mm: expected a finite number in (0, 2000] mm");
   EXPECT_CONTAINS(errorWith("/deployment/coil/length_mm", nullptr, true), "/deployment/coil/length_mm: missing");
   EXPECT_CONTAINS(errorWith("/deployment/coil/boundary", nlohmann::json::array()),
                   "/deployment/coil/boundary: unknown key; allowed here: name, length_mm");
@@ -199,7 +199,7 @@ TEST(SceneDeployment, FlexibleCatheterErrorsNameTheirPath) {
   EXPECT_CONTAINS(flexibleErrorWith("/deployment/catheter/rest_shape/radius_mm", nullptr, true),
                   "/deployment/catheter/rest_shape/radius_mm: missing");
   EXPECT_CONTAINS(flexibleErrorWith("/deployment/catheter/material/young_modulus_gpa", "soft"),
-                  "/deployment/catheter/material/young_modulus_gpa: expected a finite number > 0");
+                  "/deployment/catheter/material/young_modulus_gpa: expected a finite number in [0.1, 1000] GPa");
   EXPECT_CONTAINS(flexibleErrorWith("/deployment/catheter/beams", 1),
                   "/deployment/catheter/beams: expected an integer in [2, 10000], got 1");
   EXPECT_CONTAINS(flexibleErrorWith("/deployment/catheter/free_length_mm", nullptr, true),
@@ -222,7 +222,7 @@ TEST(SceneDeployment, LimitsAndNumbersAreChecked) {
   EXPECT_CONTAINS(errorWith("/deployment/initial_deployed_mm", -1),
                   "/deployment/initial_deployed_mm: expected a finite number >= 0, got -1");
   EXPECT_CONTAINS(errorWith("/deployment/max_push_speed_mm_s", 0),
-                  "/deployment/max_push_speed_mm_s: expected a finite number > 0");
+                  "/deployment/max_push_speed_mm_s: expected a finite number in (0, 1000] mm/s");
   EXPECT_CONTAINS(errorWith("/deployment/initial_twist_deg", "90"), "/deployment/initial_twist_deg: expected a finite number");
   EXPECT_CONTAINS(errorWith("/deployment/initial_deployed", 3),
                   "/deployment/initial_deployed: unknown key (did you mean \"initial_deployed_mm\"?)");

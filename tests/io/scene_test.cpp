@@ -193,15 +193,15 @@ TEST(SceneErrors, MalformedJsonGivesLineAndColumn) {
 
 TEST(SceneErrors, WrongTypeNamesPathExpectationAndValue) {
   EXPECT_EQ(errorWith("/rods/0/material/young_modulus_gpa", "abc"),
-            "t.json: /rods/0/material/young_modulus_gpa: expected a finite number > 0, got \"abc\"");
-  EXPECT_CONTAINS(errorWith("/rods/0/beams", "ten"), "/rods/0/beams: expected an integer in [1, 100000], got \"ten\"");
+            "t.json: /rods/0/material/young_modulus_gpa: expected a finite number in [0.1, 1000] GPa, got \"abc\"");
+  EXPECT_CONTAINS(errorWith("/rods/0/beams", "ten"), "/rods/0/beams: expected an integer in [1, 20000], got \"ten\"");
   EXPECT_CONTAINS(errorWith("/rods", nlohmann::json::object()), "/rods: expected an array of at least one rod, got an empty object");
   EXPECT_CONTAINS(errorWith("/gravity_m_s2", {0, 0}), "/gravity_m_s2: expected [x, y, z]");
   EXPECT_CONTAINS(errorWith("/effects/gravity/enabled", 1), "/effects/gravity/enabled: expected true or false, got 1");
 }
 
 TEST(SceneErrors, MissingFieldIsNamed) {
-  EXPECT_EQ(errorWithout("/rods/0/length_mm"), "t.json: /rods/0/length_mm: missing; expected a finite number > 0");
+  EXPECT_EQ(errorWithout("/rods/0/length_mm"), "t.json: /rods/0/length_mm: missing; expected a finite number in (0, 2000] mm");
   EXPECT_CONTAINS(errorWithout("/rods/0/material/density_g_cm3"), "/rods/0/material/density_g_cm3: missing");
   EXPECT_CONTAINS(errorWithout("/time_step_s"), "/time_step_s: missing");
   EXPECT_CONTAINS(errorWithout("/solve"), "/solve: missing; expected one of \"dynamic\", \"static\"");
@@ -229,12 +229,12 @@ TEST(SceneErrors, NonFiniteNumberIsNamed) {
 
 TEST(SceneErrors, SignsAndRangesAreChecked) {
   EXPECT_EQ(errorWith("/rods/0/material/young_modulus_gpa", -7.5),
-            "t.json: /rods/0/material/young_modulus_gpa: expected a finite number > 0, got -7.5");
+            "t.json: /rods/0/material/young_modulus_gpa: expected a finite number in [0.1, 1000] GPa, got -7.5");
   EXPECT_CONTAINS(errorWith("/rods/0/material/poisson_ratio", 0.6), "/rods/0/material/poisson_ratio: expected a finite number in (-1, 0.5], got 0.6");
-  EXPECT_CONTAINS(errorWith("/rods/0/section/wire_radius_mm", 0), "/rods/0/section/wire_radius_mm: expected a finite number > 0, got 0");
-  EXPECT_CONTAINS(errorWith("/time_step_s", 2), "/time_step_s: expected a finite number in (0, 1] s, got 2");
+  EXPECT_CONTAINS(errorWith("/rods/0/section/wire_radius_mm", 0), "/rods/0/section/wire_radius_mm: expected a finite number in (0, 5] mm, got 0");
+  EXPECT_CONTAINS(errorWith("/time_step_s", 2), "/time_step_s: expected a finite number in (0, 0.01] s, got 2");
   EXPECT_CONTAINS(errorWith("/damping/rayleigh_mass_1_s", -1), "/damping/rayleigh_mass_1_s: expected a finite number >= 0");
-  EXPECT_CONTAINS(errorWith("/rods/0/beams", 0), "/rods/0/beams: expected an integer in [1, 100000], got 0");
+  EXPECT_CONTAINS(errorWith("/rods/0/beams", 0), "/rods/0/beams: expected an integer in [1, 20000], got 0");
   // Effect bounds come from the effect's ParamSpec.
   EXPECT_CONTAINS(errorWith("/effects/buoyancy/medium_density_g_cm3", 30),
                   "/effects/buoyancy/medium_density_g_cm3: expected a finite number in [0, 25] g/cm3, got 30");
