@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "app/exit_codes.h"
+#include "app/format.h"
 #include "io/json_writer.h"
 #include "io/units.h"
 #include "planning/case_file.h"
@@ -65,15 +66,18 @@ struct PlanArgs {
 std::string parseArgs(const std::vector<std::string>& args, PlanArgs& a) {
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
+    // An option's value is never the next option (`--out --jobs` names no directory).
     auto value = [&](std::string& v) {
-      if (i + 1 >= args.size()) return false;
+      if (i + 1 >= args.size() || args[i + 1].rfind("--", 0) == 0) return false;
       v = args[++i];
       return true;
     };
-    auto positive = [&](std::optional<double>& out, const char* what) -> std::string {
+    // A number in (0, max]: the bounds say what the operator and the solver can run.
+    auto inRange = [&](std::optional<double>& out, const char* what, double max) -> std::string {
       std::string v;
       double d = 0;
-      if (!value(v) || !number(v, d) || !(d > 0)) return arg + " needs " + what + " > 0, got \"" + v + "\"";
+      if (!value(v) || !number(v, d) || !(d > 0) || !(d <= max))
+        return arg + " needs " + what + " in (0, " + fmt("%g", max) + "], got \"" + v + "\"";
       out = d;
       return "";
     };
@@ -91,18 +95,22 @@ std::string parseArgs(const std::vector<std::string>& args, PlanArgs& a) {
     } else if (arg == "--catalogue") {
       if (!value(a.catalogue)) return "--catalogue needs a directory of coil files";
     } else if (arg == "--speed") {
-      if (!(err = positive(a.speedMmS, "a push speed in mm/s")).empty()) return err;
+      if (!(err = inRange(a.speedMmS, "a push speed in mm/s", 1000)).empty()) return err;
     } else if (arg == "--force-threshold") {
-      if (!(err = positive(a.thresholdMn, "a tip force in mN")).empty()) return err;
+      if (!(err = inRange(a.thresholdMn, "a tip force in mN", 10000)).empty()) return err;
     } else if (arg == "--spacing") {
-      if (!(err = positive(a.spacingMm, "a beam length in mm")).empty()) return err;
+      if (!(err = inRange(a.spacingMm, "a beam length in mm", 5)).empty()) return err;
+      if (*a.spacingMm < 0.05) return "--spacing needs a beam length in [0.05, 5] mm, got \"" + args[i] + "\"";
     } else if (arg == "--max-time") {
-      if (!(err = positive(a.maxTime, "a number of seconds")).empty()) return err;
+      if (!(err = inRange(a.maxTime, "a number of seconds", 3600)).empty()) return err;
     } else if (arg == "--sensitivity") {
       const std::vector<std::string> parts = value(v) ? split(v, ',') : std::vector<std::string>{};
       double s = 0, t = 0;
-      if (parts.size() != 2 || !number(parts[0], s) || !number(parts[1], t) || s < 0 || t < 0 || s + t == 0)
-        return "--sensitivity needs SHIFT_MM,TILT_DEG (>= 0, not both 0), e.g. 0.5,5; got \"" + v + "\"";
+      // A catheter tip moved by more than a sac's radius, or tilted past 45 deg, is another plan.
+      if (parts.size() != 2 || !number(parts[0], s) || !number(parts[1], t) || !(s >= 0 && s <= 5) ||
+          !(t >= 0 && t <= 45) || s + t == 0)
+        return "--sensitivity needs SHIFT_MM,TILT_DEG (shift in [0, 5] mm, tilt in [0, 45] deg, not both 0), e.g. "
+               "0.5,5; got \"" + v + "\"";
       a.sensitivity = std::make_pair(s, t);
     } else if (arg == "--no-screenshots") {
       a.screenshots = false;

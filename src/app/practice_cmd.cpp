@@ -1,9 +1,11 @@
 // `coilsim practice`: scripted, replayed or windowed (practice_window.cpp) sessions and their score sheets.
 #include "app/practice_cmd.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 #include "app/format.h"
@@ -70,8 +72,9 @@ int runPractice(const std::vector<std::string>& args) {
   double duration = 0;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
+    // An option's value is never the next option (`--out --duration` names no file).
     auto value = [&](std::string& v) {
-      if (i + 1 >= args.size()) return false;
+      if (i + 1 >= args.size() || args[i + 1].rfind("--", 0) == 0) return false;
       v = args[++i];
       return !v.empty();
     };
@@ -94,8 +97,9 @@ int runPractice(const std::vector<std::string>& args) {
     } else if (a == "--duration") {
       const auto [end, ec] = value(v) ? std::from_chars(v.data(), v.data() + v.size(), duration)
                                       : std::from_chars_result{nullptr, std::errc::invalid_argument};
-      if (ec != std::errc() || end != v.data() + v.size() || !(duration > 0) || !std::isfinite(duration))
-        return usage("--duration needs seconds > 0, got \"" + v + "\"");
+      // A session file holds at most an hour (what --replay reads back).
+      if (ec != std::errc() || end != v.data() + v.size() || !(duration > 0) || !(duration <= 3600))
+        return usage("--duration needs seconds in (0, 3600], got \"" + v + "\"");
     } else if (a == "--record") {
       if (!value(record)) return usage("--record needs a session file name");
     } else if (a == "--replay") {
@@ -155,12 +159,22 @@ int runPractice(const std::vector<std::string>& args) {
     planning::ScoreSheet score;
     if (!replay.empty()) {
       const planning::SessionRecording s = planning::loadSession(replay);
+      // A session recorded on another case replays other physics: refused, naming the session's field.
+      namespace fs = std::filesystem;
+      std::error_code ec;
+      const bool sameCase = s.caseLabel == casePath || fs::equivalent(fs::path(s.caseLabel), fs::path(casePath), ec) ||
+                            fs::path(s.caseLabel).filename() == fs::path(casePath).filename();
+      if (!sameCase)
+        throw io::InputError(replay + ": /case: the session was recorded on \"" + s.caseLabel + "\", not on " + casePath);
+      bool known = false;
+      for (const io::CoilSpec& c : pc.coils) known = known || c.name == s.coil;
+      if (!known) throw io::InputError(replay + ": /coil: the case " + casePath + " has no coil \"" + s.coil + "\"");
       score = planning::playSession(pc, s.coil, s.timeline, s.views, s.end, nullptr, {}, picture);
     } else {
       if (coil.empty()) coil = pc.coils.front().name;
       const std::vector<TimedCommand> timeline = io::loadTimeline(input);
       // Without --duration: one second after the last command.
-      if (duration == 0) duration = (timeline.empty() ? 0.0 : timeline.back().time) + 1.0;
+      if (duration == 0) duration = std::min(3600.0, (timeline.empty() ? 0.0 : timeline.back().time) + 1.0);
       if (view != "3d") views.insert(views.begin(), {0.0, view});
       nlohmann::ordered_json recording;
       score = planning::playSession(pc, coil, timeline, views, duration, &recording, {}, picture);
@@ -169,6 +183,7 @@ int runPractice(const std::vector<std::string>& args) {
     const std::string text = io::formatJson(planning::scoreJson(score));
     io::writeFileAtomic(out, text);
     std::fputs(text.c_str(), stdout);
+    for (const std::string& m : score.deviceMessages) std::fprintf(stderr, "coilsim practice: device: %s\n", m.c_str());
     if (!score.ok) std::fprintf(stderr, "coilsim practice: %s\n", score.error.c_str());
     return score.ok ? kExitOk : kExitFailure;
   } catch (const io::InputError& e) {

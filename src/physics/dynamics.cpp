@@ -197,9 +197,29 @@ void recordWallPenetration(const Model& model, State& state) {
   }
 }
 
+// Where a state that the last step left healthy was made non-finite from
+// outside (a device placed at an absurd pose, a caller's edit): empty if none.
+std::string nonFiniteStart(const Model& model, const State& state) {
+  for (size_t k = 0; k < state.rods.size(); ++k) {
+    const RodState& r = state.rods[k];
+    if (!r.active) continue;
+    for (int i = 0; i < r.activeNodes; ++i)
+      if (!std::isfinite(r.x[i].sum() + r.q[i].coeffs().sum() + r.v[i].sum() + r.w[i].sum()))
+        return "rod '" + model.rods[k].name + "' node " + std::to_string(i) +
+               ": non-finite position, rotation or velocity before the step";
+  }
+  return {};
+}
+
 }  // namespace
 
 StepReport step(const Model& model, State& state) {
+  // Contact detection must never see non-finite positions: refused before it runs.
+  if (std::string bad = nonFiniteStart(model, state); !bad.empty()) {
+    ++state.blowups;
+    warnOnce(state, "step refused at t = " + std::to_string(state.time) + " s: " + bad);
+    return {StepStatus::BlowUp, std::move(bad)};
+  }
   const auto start = std::chrono::steady_clock::now();
   long iterations = 0;
   StepReport report = attempt(model, state, model.timeStep, true, true, iterations);

@@ -2,6 +2,7 @@
 #include "planning/practice.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "io/json_reader.h"
 #include "io/scene.h"
@@ -45,12 +46,14 @@ std::string PracticeSession::command(const DeviceCommand& c) {
   const DeviceCommand read = asRecorded(c);
   const std::string why = coilsim::command(model_, state_, read);
   if (why.empty()) scorer_->commandAccepted(time(), commandJson({time(), c}), read);
+  else note(why);
   return why;
 }
 
 std::string PracticeSession::replayCommand(const DeviceCommand& c) {
   const std::string why = coilsim::command(model_, state_, c);
   if (why.empty()) scorer_->commandAccepted(time(), commandJson({time(), c}), c);
+  else note(why);
   return why;
 }
 
@@ -60,13 +63,24 @@ bool PracticeSession::step() {
   if (!scorer_->scoring()) return false;
   scorer_->beforeStep(state_);
   const StepReport rep = coilsim::advance(model_, state_);
+  for (const std::string& n : state_.device.notes) note(n);
   state_.device.notes.clear();
   ++steps_;
   scorer_->afterStep(model_, state_, rep.ok(), rep.message);
   return rep.ok();
 }
 
-ScoreSheet PracticeSession::finish() { return scorer_->finish(model_, state_); }
+void PracticeSession::note(const std::string& message) {
+  char t[40];
+  std::snprintf(t, sizeof t, "t = %.3f s: ", time());
+  deviceMessages_.push_back(t + message);
+}
+
+ScoreSheet PracticeSession::finish() {
+  ScoreSheet s = scorer_->finish(model_, state_);
+  s.deviceMessages = deviceMessages_;
+  return s;
+}
 
 ordered_json PracticeSession::recording() const { return scorer_->recording(time()); }
 

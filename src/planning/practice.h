@@ -38,7 +38,7 @@ class PracticeSession {
   PracticeSession(const PracticeCase& practiceCase, const std::string& coilName, const ContactForceSource& contacts = {});
 
   // Starts a device command at the next step; returns "" or why the device refuses it
-  // (a refused command is not recorded).
+  // (a refused command is not recorded as a command; the score sheet lists it).
   std::string command(const DeviceCommand& c);
   // The same for a command read from a recording, applied exactly as read.
   std::string replayCommand(const DeviceCommand& c);
@@ -65,7 +65,9 @@ class PracticeSession {
   Model model_;
   State state_;
   long steps_ = 0;
-  std::optional<SessionScorer> scorer_;  // built once the deployment is known
+  std::optional<SessionScorer> scorer_;
+  std::vector<std::string> deviceMessages_;  // refusals and limits reached, for the score sheet
+  void note(const std::string& message);  // built once the deployment is known
 };
 
 // A recorded session, read back.

@@ -81,6 +81,7 @@ ordered_json scoreJson(const ScoreSheet& s) {
   j["detached"] = s.detached;
   j["detach_in_sac"] = s.detachInSac;
   j["goal_met"] = s.goalMet;
+  j["device_messages"] = s.deviceMessages;
   return j;
 }
 

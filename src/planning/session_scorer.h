@@ -42,6 +42,9 @@ struct ScoreSheet {
   bool goalMet = false;
   bool ok = true;                  // false: a step was refused
   std::string error;
+  // Device commands refused and device limits reached ("t = 0.000 s: refused:
+  // the coil is not fully out ..."), in time order: nothing a trainee did is dropped unsaid.
+  std::vector<std::string> deviceMessages;
 };
 
 // The score sheet as JSON ("coilsim-score/1"), in edge units (mm, mN, s).

@@ -48,9 +48,22 @@ def dump(doc):
 RAW = {"__RAW_1e999__": "1e999", "__RAW_-1e999__": "-1e999"}
 
 
+# Entries whose open item is fixed (OPEN.md says where): they must pass now.
+FIXED = {
+    "case/coil-1km.json", "cli/plan-max-time-1e308", "cli/plan-sensitivity-1e308", "cli/plan-spacing-1e-300",
+    "cli/plan-speed-1e308", "cli/practice-duration-1e9", "cli/practice-duration-4000-record",
+    "cli/practice-out-then-option", "scene/default.area-1e9.json", "scene/default.beams-100000.json",
+    "scene/default.coil-1km.json", "scene/default.density-1e-300.json", "scene/default.gravity-1e9.json",
+    "scene/default.max-push-speed-1e9.json", "scene/default.time-step-1.json", "session/coil-not-in-case.json",
+    "session/names-another-case.json", "session/refused-detach-before-push.json",
+}
+
+
 def add(name, kind, content, args, exit_code, contains=(), timeout=20, open_=None, path=None, extra=None):
     """content: str/bytes written to corpus/<kind>/<name> (or `path`), None for no file."""
     entry = {"name": kind + "/" + name, "kind": kind}
+    if entry["name"] in FIXED:
+        open_ = None
     if content is not None:
         fpath = path or os.path.join(kind, name)
         entry["file"] = fpath

@@ -16,6 +16,12 @@ std::uint64_t cellKey(long ix, long iy, long iz) {
          std::uint64_t((iz + kOffset) & kMask);
 }
 
+// A coordinate in cells as an index cellKey can pack. Clamped in double
+// first: a position far out (a catheter moved by 1e308 mm) must not
+// overflow the integer conversion; cells beyond the clamp merely share the
+// border cell, and every pair found is still measured exactly.
+long cellIndex(double v) { return std::lround(std::floor(std::clamp(v, -1e6, 1e6))); }
+
 bool takesPart(const RodState& r) { return r.active && r.activeNodes >= 2; }
 
 // Calls visit(ri, si, rj, sj) once for every pair of segments (ri before rj,
@@ -43,8 +49,7 @@ void forEachNearPair(const Model& model, const State& state, bool sameRod, doubl
     if (!takesPart(r)) continue;
     for (int e = 0; e + 1 < r.activeNodes; ++e) {
       const Vec3 m = 0.5 * (r.x[e] + r.x[e + 1]) / cell;
-      grid.push_back({cellKey(std::lround(std::floor(m.x())), std::lround(std::floor(m.y())), std::lround(std::floor(m.z()))),
-                      int(k), e});
+      grid.push_back({cellKey(cellIndex(m.x()), cellIndex(m.y()), cellIndex(m.z())), int(k), e});
     }
   }
   std::sort(grid.begin(), grid.end(), [](const GridSegment& a, const GridSegment& b) { return a.cell < b.cell; });
