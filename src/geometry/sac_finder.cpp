@@ -6,6 +6,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "geometry/sac_morphology.h"
+
 namespace coilsim::geometry {
 namespace {
 
@@ -70,10 +72,10 @@ bool placeNeck(const MeshQuery& query, const std::vector<Ball>& balls, SacFindin
   // sac's axis comes within that radius of it: the vessel wall continued
   // across the ostium. (The union of the balls would put it higher: the
   // medial axis runs on from the vessel up through the ostium into the sac.)
-  const Vec3 at = c + entry * d;
+  const Vec3 entered = c + entry * d;
   std::vector<const Ball*> about;
   for (const Ball& b : s.centreLine)
-    if ((b.centre - at).norm() < 3 * first->radius) about.push_back(&b);
+    if ((b.centre - entered).norm() < 3 * first->radius) about.push_back(&b);
   if (about.size() < 3) return false;
   Vec3 mean = Vec3::Zero();
   for (const Ball* b : about) mean += b->centre;
@@ -93,11 +95,34 @@ bool placeNeck(const MeshQuery& query, const std::vector<Ball>& balls, SacFindin
   // |a + t n| across e equals the radius; a has no part along e.
   const double B = 2 * a.dot(n), C = a.squaredNorm() - s.vesselRadius * s.vesselRadius;
   const double disc = B * B - 4 * C;
-  if (disc < 0) return false;
-  entry = 0.5 * (-B - std::sqrt(disc));
+  entry = disc >= 0 ? 0.5 * (-B - std::sqrt(disc)) : -1;
+  if (!(entry > 0)) {
+    // The sac sits on the vessel's axis (a bifurcation aneurysm on a wide
+    // junction): no tube to continue. The neck is then where the inscribed
+    // radius along the axis has fallen to the vessel's (the balls' median).
+    std::vector<double> radii;
+    for (const Ball* b : about) radii.push_back(b->radius);
+    const double vessel = median(radii);
+    s.vesselRadius = vessel;
+    entry = -1;
+    for (double t = 0; t < 4 * s.radius; t += 0.02 * s.radius)
+      if (query.closest(c + t * n).distance <= vessel) {
+        entry = t;
+        break;
+      }
+  }
   if (!(entry > 0) || entry > 4 * s.radius) return false;
-  const Vec3& d2 = s.axis;
-  s.neck = Plane{c + entry * d2, -d2};
+  s.neck = Plane{c + entry * n, -n};
+  // A plane that grazes a curved parent vessel cuts a sliver off its wall,
+  // and the ostium then runs along the vessel: move the plane toward the
+  // dome until the ostium is no wider than the sac's inscribed diameter
+  // (plus a fifth: a saccular neck is narrower than its dome).
+  for (int step = 0; step < 40; ++step) {
+    const SacMorphology m = measureSac(query.mesh(), s.neck, c, 0);
+    if (m.neckWidth <= 2.4 * s.radius) break;
+    s.neck.point += 0.05 * s.radius * s.neck.normal;
+    if (!(s.neck.side(c) > 0)) return false;
+  }
   return true;
 }
 
@@ -175,7 +200,8 @@ SacFinding findSac(const MeshQuery& query, const SacFinderOptions& o) {
       const auto groups = openings(query, trial.centre, trial.radius, o.rays, o.freeFactor);
       if (groups.size() != 1) continue;
       trial.axis = meanDirection(groups.front());
-      if (!placeNeck(query, balls, trial) || trial.radius < o.sacOverVessel * trial.vesselRadius) continue;
+      const bool placed = placeNeck(query, balls, trial);
+      if (!placed || trial.radius < o.sacOverVessel * trial.vesselRadius) continue;
       trial.candidates.push_back({trial.centre, trial.radius});
       sacs.push_back(std::move(trial));
     }
