@@ -118,7 +118,7 @@ bool placeNeck(const MeshQuery& query, const std::vector<Ball>& balls, SacFindin
   // dome until the ostium is no wider than the sac's inscribed diameter
   // (plus a fifth: a saccular neck is narrower than its dome).
   for (int step = 0; step < 40; ++step) {
-    const SacMorphology m = measureSac(query.mesh(), s.neck, c, 0);
+    const SacMorphology m = measureSac(query.mesh(), s.neck, c, 0, true);
     if (m.neckWidth <= 2.4 * s.radius) break;
     s.neck.point += 0.05 * s.radius * s.neck.normal;
     if (!(s.neck.side(c) > 0)) return false;

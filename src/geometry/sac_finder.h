@@ -30,7 +30,7 @@ namespace coilsim::geometry {
 struct SacFinderOptions {
   std::optional<Vec3> sacPoint;  // a point in the sac: skip the search for candidates
   int samples = 6000;            // triangles sampled for inscribed balls
-  int rays = 800;                // rays cast per candidate
+  int rays = 500;                // rays cast per candidate
   double freeFactor = 1.6;       // a ray is free when longer than this times the ball radius
   double sacOverVessel = 1.15;   // a sac's ball is at least this times the median peak radius
 };

@@ -23,7 +23,8 @@ std::pair<int, int> farthestPair(const std::vector<Vec3>& p) {
 
 }  // namespace
 
-SacMorphology measureSac(const TriangleMesh& mesh, const Plane& neck, const Vec3& inSac, double vesselDiameter) {
+SacMorphology measureSac(const TriangleMesh& mesh, const Plane& neck, const Vec3& inSac, double vesselDiameter,
+                         bool neckOnly) {
   SacMorphology m;
   const size_t nt = mesh.triangles.size();
   std::vector<double> side(mesh.vertices.size());
@@ -107,6 +108,7 @@ SacMorphology measureSac(const TriangleMesh& mesh, const Plane& neck, const Vec3
   } else {
     m.neckCentre = neck.point;
   }
+  if (neckOnly) return m;
   // Heights and diameters over the sac's points.
   for (const Vec3& p : points) {
     m.domeHeight = std::max(m.domeHeight, neck.side(p));

@@ -28,7 +28,9 @@ struct SacMorphology {
 // Measures the piece of `mesh` (closed, outward) on the normal side of
 // `neck` that holds the surface point nearest `inSac`. `vesselDiameter` <= 0
 // leaves the size ratio 0. Returns all zeros when no surface lies on that
-// side of the plane.
-SacMorphology measureSac(const TriangleMesh& mesh, const Plane& neck, const Vec3& inSac, double vesselDiameter);
+// side of the plane. `neckOnly` skips the sac's diameters and heights
+// (quadratic in its points), for a caller that moves the plane.
+SacMorphology measureSac(const TriangleMesh& mesh, const Plane& neck, const Vec3& inSac, double vesselDiameter,
+                         bool neckOnly = false);
 
 }  // namespace coilsim::geometry

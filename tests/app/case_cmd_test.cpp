@@ -88,7 +88,7 @@ TEST(CaseNew, TwoSacsAskForASacPoint) {
     const double tube = std::max(std::hypot(p.y(), p.z()) - 2, std::abs(p.x()) - 14);
     return std::min({tube, (p - left).norm() - 3.2, (p - right).norm() - 3.2});
   };
-  writeSurface(geometry::polygonise(field, Vec3(-15, -4, -3), Vec3(15, 4, 9), 0.4), dir / "two.stl");
+  writeSurface(geometry::polygonise(field, Vec3(-15, -4, -3), Vec3(15, 4, 9), 0.5), dir / "two.stl");
   const Exec r = apptest::coilsim({"case", "new", (dir / "two.stl").string(), "--out", (dir / "case.json").string()}, dir);
   EXPECT_EQ(r.code, 2);
   EXPECT_CONTAINS(r.err, "2 candidate sacs");

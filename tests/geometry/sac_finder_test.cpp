@@ -76,7 +76,7 @@ TEST(SacFinder, TwoSacsAskForAPoint) {
     const double tube = std::max(vessel, std::abs(p.x()) - 14);
     return std::min({tube, (p - left).norm() - 3.2, (p - right).norm() - 3.2});
   };
-  const TriangleMesh mesh = polygonise(field, Vec3(-15, -4, -3), Vec3(15, 4, 9), 0.4);
+  const TriangleMesh mesh = polygonise(field, Vec3(-15, -4, -3), Vec3(15, 4, 9), 0.5);
   const MeshQuery query(mesh);
   const SacFinding s = findSac(query);
   EXPECT_FALSE(s.found);
@@ -94,7 +94,7 @@ TEST(SacFinder, TwoSacsAskForAPoint) {
 // A closed ball has no vessel and no neck: nothing is found, and it says why.
 TEST(SacFinder, ABallWithoutVesselHasNoSac) {
   const Field ball = [](const Vec3& p) { return p.norm() - 4; };
-  const TriangleMesh mesh = polygonise(ball, Vec3::Constant(-5), Vec3::Constant(5), 0.5);
+  const TriangleMesh mesh = polygonise(ball, Vec3::Constant(-5), Vec3::Constant(5), 0.8);
   const MeshQuery query(mesh);
   const SacFinding s = findSac(query);
   EXPECT_FALSE(s.found);
@@ -109,7 +109,7 @@ TEST(SacFinder, ABallWithoutVesselHasNoSac) {
 // A sac point outside the surface is refused, naming the point.
 TEST(SacFinder, ASacPointOutsideIsRefused) {
   const Field ball = [](const Vec3& p) { return p.norm() - 4; };
-  const MeshQuery query(polygonise(ball, Vec3::Constant(-5), Vec3::Constant(5), 0.5));
+  const MeshQuery query(polygonise(ball, Vec3::Constant(-5), Vec3::Constant(5), 0.8));
   SacFinderOptions o;
   o.sacPoint = Vec3(9, 0, 0);
   const SacFinding s = findSac(query, o);
