@@ -8,6 +8,7 @@
 #include "app/exit_codes.h"
 #include "io/json_reader.h"
 #include "io/json_writer.h"
+#include "planning/case_editor.h"
 #include "planning/case_maker.h"
 
 namespace coilsim::app {
@@ -18,7 +19,10 @@ constexpr const char* kUsage =
     "  SURFACE: a closed vessel surface in mm (STL, OBJ, PLY, OFF) with one aneurysm;\n"
     "  finds the sac and its neck, measures the sac, sizes the first coil, places the\n"
     "  catheter tip inside the neck and writes a case for coilsim plan and practice.\n"
-    "  --sac-point: a point inside the sac (mm), when the search finds several or none.\n";
+    "  --sac-point: a point inside the sac (mm), when the search finds several or none.\n"
+    "       coilsim case edit CASE.json [--neck-shift MM] [--neck-through X,Y,Z] [--tip X,Y,Z] --out NEW.json\n"
+    "  moves the neck plane (along its normal, or through a point) and the catheter tip,\n"
+    "  prints the morphology again and writes the edited case (no window yet).\n";
 
 bool parsePoint(const std::string& s, Vec3& p) {
   const char* at = s.data();
@@ -104,6 +108,69 @@ int runNew(const std::vector<std::string>& args) {
   }
 }
 
+void printEdited(const planning::CaseEditor& e) {
+  const geometry::SacMorphology& m = e.morphology();
+  std::printf("neck plane: point (%.2f, %.2f, %.2f) mm, normal (%.3f, %.3f, %.3f)\n", e.neck().point.x(), e.neck().point.y(),
+              e.neck().point.z(), e.neck().normal.x(), e.neck().normal.y(), e.neck().normal.z());
+  std::printf("sac volume %.1f mm^3, neck width %.2f mm, dome height %.2f mm, mean diameter %.2f mm, aspect ratio %.2f, "
+              "dome-to-neck %.2f\n",
+              m.volume, m.neckWidth, m.domeHeight, m.meanDiameter, m.aspectRatio, m.domeToNeck);
+}
+
+int runEdit(const std::vector<std::string>& args) {
+  auto usage = [](const std::string& message) {
+    std::fprintf(stderr, "coilsim case edit: %s\n%s", message.c_str(), kUsage);
+    return kExitUsage;
+  };
+  std::string file, out;
+  std::vector<std::pair<std::string, std::string>> edits;  // in the order given
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--out" || a == "--neck-shift" || a == "--neck-through" || a == "--tip") {
+      if (i + 1 >= args.size()) return usage(a + " needs a value");
+      if (a == "--out") out = args[++i];
+      else edits.emplace_back(a, args[++i]);
+    } else if (!a.empty() && a[0] == '-') {
+      return usage("unknown option \"" + a + "\"");
+    } else if (file.empty()) {
+      file = a;
+    } else {
+      return usage("one case at a time, got \"" + file + "\" and \"" + a + "\"");
+    }
+  }
+  if (file.empty()) return usage("needs a case file");
+  if (out.empty()) return usage("needs --out NEW.json (the window editor is not built yet)");
+  try {
+    planning::CaseEditor e(file);
+    for (const auto& [option, value] : edits) {
+      Vec3 p;
+      double mm = 0;
+      bool ok = false;
+      if (option == "--neck-shift") {
+        const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), mm);
+        if (ec != std::errc() || end != value.data() + value.size()) return usage("--neck-shift needs a number of mm");
+        ok = e.moveNeck(mm);
+      } else {
+        if (!parsePoint(value, p)) return usage(option + " needs three numbers x,y,z in mm, got \"" + value + "\"");
+        ok = option == "--tip" ? e.placeTip(p) : e.placeNeckThrough(p);
+      }
+      if (!ok) {
+        std::fprintf(stderr, "coilsim case edit: %s: %s %s refused: %s\n", file.c_str(), option.c_str(), value.c_str(),
+                     option == "--tip" ? "the tip must lie inside the surface"
+                                       : "the neck plane must leave the sac centre on the dome side and cut off a sac");
+        return kExitUsage;
+      }
+    }
+    printEdited(e);
+    e.save(out);
+    std::printf("wrote %s\n", out.c_str());
+    return kExitOk;
+  } catch (const std::exception& ex) {
+    std::fprintf(stderr, "coilsim case edit: %s\n", ex.what());
+    return kExitUsage;
+  }
+}
+
 }  // namespace
 
 int runCaseCommand(const std::vector<std::string>& args) {
@@ -113,6 +180,7 @@ int runCaseCommand(const std::vector<std::string>& args) {
   }
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (args[0] == "new") return runNew(rest);
+  if (args[0] == "edit") return runEdit(rest);
   std::fprintf(stderr, "coilsim case: unknown sub-command \"%s\"\n%s", args[0].c_str(), kUsage);
   return kExitUsage;
 }

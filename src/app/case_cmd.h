@@ -1,8 +1,9 @@
 #pragma once
 // `coilsim case new SURFACE --out CASE.json [--sac-point x,y,z]`: a case made
 // from a patient's surface (planning/case_maker.h), its morphology printed.
-// `coilsim case edit CASE.json`: the sac, neck plane and catheter tip in a
-// window (when the build has the ui layer).
+// `coilsim case edit CASE.json --neck-shift MM ... --out NEW.json`: the neck
+// plane and the tip moved through planning::CaseEditor, the case saved (the
+// window that drives the same editor by dragging is not built yet).
 #include <string>
 #include <vector>
 

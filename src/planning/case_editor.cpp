@@ -88,7 +88,7 @@ bool CaseEditor::placeNeckThrough(const Vec3& point) { return point.allFinite() 
 
 bool CaseEditor::placeTip(const Vec3& point) {
   if (!point.allFinite() || !query_.inside(point)) return false;
-  catheter_.tip = point, edited_ = true;
+  catheter_.tip = point, edited_ = catheterMoved_ = true;
   return true;
 }
 
@@ -97,17 +97,19 @@ bool CaseEditor::pointTip(const Vec3& direction) {
   catheter_.direction = direction.normalized();
   Vec3 across = catheter_.referenceNormal - catheter_.referenceNormal.dot(catheter_.direction) * catheter_.direction;
   catheter_.referenceNormal = across.norm() > 1e-6 ? Vec3(across.normalized()) : Vec3(catheter_.direction.unitOrthogonal());
-  edited_ = true;
+  edited_ = catheterMoved_ = true;
   return true;
 }
 
 nlohmann::ordered_json CaseEditor::document() const {
   nlohmann::ordered_json d = doc_;
   d["sac"]["neck_plane"] = {{"point_mm", rounded(neck_.point, 1e-4)}, {"normal", rounded(neck_.normal, 1e-6)}};
-  auto& cath = d["scene"]["deployment"]["catheter"];
-  cath["tip_position_mm"] = rounded(catheter_.tip, 1e-4);
-  cath["direction"] = rounded(catheter_.direction, 1e-6);
-  cath["reference_normal"] = rounded(catheter_.referenceNormal, 1e-6);
+  if (catheterMoved_) {
+    auto& cath = d["scene"]["deployment"]["catheter"];
+    cath["tip_position_mm"] = rounded(catheter_.tip, 1e-4);
+    cath["direction"] = rounded(catheter_.direction, 1e-6);
+    cath["reference_normal"] = rounded(catheter_.referenceNormal, 1e-6);
+  }
   d["morphology"] = morphologyJson(morphology_, vesselDiameter_);
   d["morphology"]["sac_centre_mm"] = rounded(sacCentre_, 1e-4);
   return d;

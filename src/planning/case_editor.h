@@ -60,6 +60,7 @@ class CaseEditor {
   double vesselDiameter_ = 0;
   geometry::SacMorphology morphology_;
   bool edited_ = false;
+  bool catheterMoved_ = false;  // only then is the scene's catheter rewritten
 };
 
 }  // namespace coilsim::planning

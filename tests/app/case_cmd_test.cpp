@@ -126,3 +126,33 @@ TEST(CaseNew, OpenAndInsideOutSurfacesAreRefused) {
 }
 
 }  // namespace
+
+namespace {
+
+// case edit moves the neck plane of a made case along its normal and saves
+// it: the saved plane is that far from the old one, the rest of the case
+// unchanged, and plan reads it.
+TEST(CaseEdit, NeckShiftIsSavedAndTheRestKept) {
+  const fs::path dir = scratch("case_edit");
+  const std::string stl = (fs::path(kSource) / "assets" / "meshes" / "sidewall-7mm.stl").string();
+  ASSERT_EQ(apptest::coilsim({"case", "new", stl, "--out", (dir / "case.json").string()}, dir).code, 0);
+  const Exec r = apptest::coilsim({"case", "edit", (dir / "case.json").string(), "--neck-shift", "0.5", "--out",
+                                   (dir / "edited.json").string()},
+                                  dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json before = readJson(dir / "case.json"), after = readJson(dir / "edited.json");
+  const Vec3 n = vec(before["sac"]["neck_plane"]["normal"]).normalized();
+  EXPECT_NEAR((vec(after["sac"]["neck_plane"]["point_mm"]) - vec(before["sac"]["neck_plane"]["point_mm"])).dot(n), 0.5, 1e-3);
+  EXPECT_LT(after["morphology"]["sac_volume_mm3"].get<double>(), before["morphology"]["sac_volume_mm3"].get<double>());
+  for (const char* key : {"sac", "morphology"}) before.erase(key), after.erase(key);
+  EXPECT_EQ(before, after);
+  EXPECT_NO_THROW(::coilsim::planning::loadCase((dir / "edited.json").string()));
+  const Exec refused = apptest::coilsim({"case", "edit", (dir / "case.json").string(), "--neck-shift", "40", "--out",
+                                         (dir / "never.json").string()},
+                                        dir);
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_CONTAINS(refused.err, "refused");
+  EXPECT_FALSE(fs::exists(dir / "never.json"));
+}
+
+}  // namespace
