@@ -12,10 +12,13 @@
 //    openings (along its axis), a junction three, a capped end one with the
 //    tube's radius, a sac one (its neck) with a radius above the vessels'.
 // 4. Neck: the axis from the sac centre through its opening (mean free
-//    direction) meets the parent vessel, the union of the inscribed balls
-//    centred outside the sac's deepest ball; the neck plane lies across the
-//    axis where it enters that union (the vessel wall continued across the
-//    ostium, as a phantom's sidecar defines it).
+//    direction) meets the parent vessel (the inscribed balls centred
+//    outside the sac's deepest ball); the balls there are a straight tube
+//    (principal direction, radius to the wall). The neck plane is parallel
+//    to the tube and lies where the sac's axis comes within the tube's
+//    radius of its axis: the vessel wall continued across the ostium, as a
+//    phantom's sidecar defines it. Fall-backs and their reasons in
+//    docs/planning.md, "Cases from a patient's surface".
 // Unsure (several sacs, no opening, no vessel behind the opening) it says so
 // and finds nothing: the caller asks for a point in the sac.
 #include <optional>
