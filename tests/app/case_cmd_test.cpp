@@ -52,9 +52,12 @@ TEST(CaseNew, CataloguePhantomsGiveTheirSidecarsNeck) {
   EXPECT_EQ(checked, 7);
 }
 
-// Each patient surface: a case without hints, then one small coil planned
-// into it stays in the sac: placed, nothing in the parent vessel, and the
-// wire never past the wall's contact skin.
+// Each patient surface: a case without hints, then two small coils planned
+// into it. The 2 x 10 mm coil stays in the sac: placed, nothing below the
+// neck plane, all but 5 % of it in the sac. The 3 x 40 mm coil presses on
+// the wall (a positive wall force, so the bound below means something) and
+// never passes the wall's contact skin, and all of it stays inside the
+// surface (in the sac, or below the neck plane in the parent vessel).
 TEST(CaseNew, PatientSurfacesGiveACaseWhoseCoilStaysInTheSac) {
   const fs::path shared = fs::path(kSource) / ".." / "shared" / "data" / "meshes";
   for (const char* mesh : {"sofa_aneurysm3D_1/aneurysm3D_1.stl", "dolfin_aneurysm/aneurysm_closed.stl"}) {
@@ -64,16 +67,26 @@ TEST(CaseNew, PatientSurfacesGiveACaseWhoseCoilStaysInTheSac) {
     const Exec made = apptest::coilsim({"case", "new", (shared / mesh).string(), "--out", (dir / "case.json").string()}, dir);
     ASSERT_EQ(made.code, 0) << made.err;
     EXPECT_CONTAINS(made.out, "sac volume");
-    const Exec plan = apptest::coilsim({"plan", (dir / "case.json").string(), "--coils", "finishing-2x10", "--speed", "10",
-                               "--no-screenshots", "--out", (dir / "plan").string()},
-                              dir);
+    const Exec plan = apptest::coilsim({"plan", (dir / "case.json").string(), "--coils", "finishing-2x10,finishing-3x40",
+                                        "--jobs", "2", "--speed", "10", "--no-screenshots", "--out", (dir / "plan").string()},
+                                       dir);
     ASSERT_EQ(plan.code, 0) << plan.err << plan.out;
-    const nlohmann::json coil = readJson(dir / "plan" / "plan.json")["coils"][0];
-    std::printf("[ measured ] %s: %s\n", mesh, coil.dump().c_str());
-    EXPECT_TRUE(coil["placed"].get<bool>());
-    EXPECT_FALSE(coil["protruding"].get<bool>());
-    EXPECT_GT(coil["coil_length_in_sac_mm"].get<double>(), 0.95 * 10);
-    EXPECT_EQ(coil["max_wall_penetration_um"].get<double>(), 0.0);
+    const nlohmann::json coils = readJson(dir / "plan" / "plan.json")["coils"];
+    ASSERT_EQ(coils.size(), 2u);
+    const nlohmann::json &small = coils[0], &pressing = coils[1];
+    for (const nlohmann::json& c : coils)
+      std::printf("[ measured ] %s, %s: in sac %.2f mm, below the neck %.2f mm, wall force lasting %.3f / peak %.3f mN, "
+                  "penetration past the skin %.3f um\n",
+                  mesh, c["name"].get<std::string>().c_str(), c["coil_length_in_sac_mm"].get<double>(),
+                  c["protruding_length_mm"].get<double>(), c["max_wall_force_mN"].get<double>(),
+                  c["peak_wall_force_mN"].get<double>(), c["max_wall_penetration_um"].get<double>());
+    EXPECT_TRUE(small["placed"].get<bool>());
+    EXPECT_FALSE(small["protruding"].get<bool>());
+    EXPECT_GT(small["coil_length_in_sac_mm"].get<double>(), 0.95 * 10);
+    EXPECT_TRUE(pressing["placed"].get<bool>());
+    EXPECT_GT(pressing["peak_wall_force_mN"].get<double>(), 0.0);
+    EXPECT_EQ(pressing["max_wall_penetration_um"].get<double>(), 0.0);
+    EXPECT_GT(pressing["coil_length_in_sac_mm"].get<double>() + pressing["protruding_length_mm"].get<double>(), 0.95 * 40);
   }
 }
 
