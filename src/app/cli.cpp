@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/bench.h"
+#include "app/case_cmd.h"
 #include "app/diagnose_cmd.h"
 #include "app/mesh_cmd.h"
 #include "app/phantom_cmd.h"
@@ -40,6 +41,7 @@ void printUsage(std::FILE* to) {
       "       coilsim plan SCENE|CASE --coils a,b --out DIR   compare catalogue coils in an aneurysm (docs/planning.md)\n"
       "       coilsim plan-merge DIR... --out DIR             merge plans (e.g. of a Slurm job array)\n"
       "       coilsim practice CASE ...     play or replay a practice session, write its score sheet\n"
+      "       coilsim case new SURFACE --out CASE.json [--sac-point x,y,z]   a case from a patient's surface\n"
       "       coilsim validate FILE [--effects a,b] [--fit young_modulus,...] --out DIR   model vs a measurement\n"
       "       coilsim validate FILE --window   the same as a panel: effect toggles, Fit, live plots, 3D error\n"
       "       coilsim diagnose FILE [--fit ...] --out DIR   which physical effect is missing (docs/validation.md)\n"
@@ -193,6 +195,7 @@ int runCli(int argc, char** argv) {
   if (command == "validate") return app::runValidate(std::vector<std::string>(args.begin() + 1, args.end()));
   if (command == "diagnose") return app::runDiagnose(std::vector<std::string>(args.begin() + 1, args.end()));
   if (command == "practice") return app::runPractice(std::vector<std::string>(args.begin() + 1, args.end()));
+  if (command == "case") return app::runCaseCommand(std::vector<std::string>(args.begin() + 1, args.end()));
   // `coilsim SCENE ...` is `coilsim run SCENE ...`.
   if (command == "run") args.erase(args.begin());
   else if (command.size() > 1 && command[0] == '-' && !isRunOption(command))

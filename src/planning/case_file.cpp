@@ -98,7 +98,11 @@ std::optional<Sac> sceneSac(const io::SceneSpec& scene, std::string& note) {
 PracticeCase parseCase(const nlohmann::json& document, const std::string& file) {
   const JsonNode root(document, file);
   if (!root.isObject()) root.expected("a case object {\"format\": \"coilsim-case/1\", ...}");
-  root.allowKeys({"format", "name", "description", "scene", "sac", "coils", "catalogue", "goal", "spacing_mm"});
+  root.allowKeys({"format", "name", "description", "scene", "sac", "coils", "catalogue", "goal", "spacing_mm", "morphology",
+                  "first_coil"});
+  // What `coilsim case new` measured and recommended: for the reader, recomputed from the sac when needed.
+  for (const char* info : {"morphology", "first_coil"})
+    if (auto m = root.optional(info); m && !m->isObject()) m->expected("an object (written by coilsim case new)");
   root.child("format").oneOf({kCaseFormat});
   PracticeCase c;
   c.file = file;
