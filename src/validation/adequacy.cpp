@@ -93,7 +93,7 @@ Adequacy adequacy(const Comparison& cmp, const std::vector<StageComparison>& sta
   if (a.explained)
     a.verdict = "explained: every stage's residual is at the noise (chi-square within its 99.9 % bound)";
   else
-    a.verdict = "an effect is still missing: the residual of stage \"" + worst + "\" is " + fmt("%.2g", worstRatio) +
+    a.verdict = "an effect is still missing: the residual of stage \"" + worst + "\" is " + fmt("%.3g", worstRatio) +
                 "x its 99.9 % chi-square bound. " + a.remaining.summary;
   return a;
 }
