@@ -63,13 +63,16 @@ struct Run {
   Diagnosis d;
 };
 
-std::unique_ptr<Run> diagnoseFile(const std::string& name) {
+// `predict` false skips the prediction check's extra fit (the slow files:
+// contacts, a dynamic stage), which the other files exercise.
+std::unique_ptr<Run> diagnoseFile(const std::string& name, bool predict = true) {
   auto r = std::make_unique<Run>();
   r->m = io::readMeasurement(kDir + name + ".json");
   r->sim = std::make_unique<StageSimulator>(r->m);
   r->cmp = std::make_unique<Comparison>(r->m);
   DiagnoseOptions o;
   o.refitTop = 2;
+  o.predict = predict;
   r->d = diagnose(*r->sim, *r->cmp, ModelParams::nominal(r->m), o);
   return r;
 }
@@ -99,8 +102,8 @@ void print(const std::string& name, const Diagnosis& d, const std::vector<double
 // The checks of the issue for a file whose hidden effects are `expected`,
 // in order; forward selection may name nothing outside `hidden`.
 void checkHidden(const std::string& name, const std::vector<std::string>& expected,
-                 const std::vector<std::string>& hidden = {}) {
-  const auto r = diagnoseFile(name);
+                 const std::vector<std::string>& hidden = {}, bool predict = true) {
+  const auto r = diagnoseFile(name, predict);
   const Diagnosis& d = r->d;
   ASSERT_TRUE(d.ok) << d.message;
   const std::vector<double> truth = trueModelErrors(name, *r->cmp);
@@ -114,7 +117,9 @@ void checkHidden(const std::string& name, const std::vector<std::string>& expect
     EXPECT_NE(std::find(hidden.begin(), hidden.end(), d.selected[k].effect), hidden.end())
         << d.selected[k].effect << " was not hidden: " << d.verdict;
   EXPECT_TRUE(d.adequacy.explained) << d.adequacy.verdict;
-  EXPECT_TRUE(d.prediction.done) << d.prediction.message;
+  if (predict) {
+    EXPECT_TRUE(d.prediction.done) << d.prediction.message;
+  }
   ASSERT_EQ(d.finalStages.size(), truth.size());
   for (size_t k = 0; k < truth.size(); ++k)
     EXPECT_LE(d.finalStages[k].metrics.stageError, 1.5 * truth[k]) << name << " stage " << k;
@@ -149,7 +154,7 @@ TEST(ReferenceFiles, CatheterTip) { checkHidden("catheter-tip", {"catheter_compl
 // The free E takes 3.9x its nominal to hold the loops up: the prior check
 // flags it, and against the regularised baseline self_contact comes first.
 TEST(ReferenceFiles, SelfContactStatic) {
-  checkHidden("self-contact-static", {"self_contact"});
+  checkHidden("self-contact-static", {"self_contact"}, {}, false);
 }
 // The tube first (it moves the coil by up to 0.96 mm); the 3.4 deg tilt,
 // once the tube is in the model, moves coilsim's coil by at most 0.004 /
@@ -159,7 +164,9 @@ TEST(ReferenceFiles, SelfContactStatic) {
 TEST(ReferenceFiles, TwoEffects) {
   checkHidden("two-effects", {"catheter_compliance"}, {"gravity_tilt"});
 }
-TEST(ReferenceFiles, Drag) { checkHidden("drag", {"drag"}); }
+// Drag and the 6 % upthrust of the glycerol-like medium: drag is found;
+// the upthrust is a weight change E absorbs in one file.
+TEST(ReferenceFiles, Drag) { checkHidden("drag", {"drag"}, {"buoyancy"}, false); }
 // Not found (kRefitStallsWithContacts, tests/support/known_bugs.h): loops
 // landing on one another in a dynamic stage. What the workbench must still
 // say: the free E is implausible (5.2x its nominal: evidence that something
