@@ -135,6 +135,12 @@ void reportOne(const WorkbenchArgs& a, const OneFile& f, const StageSimulator& s
     t << "  " << c.effect << std::string(c.effect.size() < 20 ? 20 - c.effect.size() : 0, ' ')
       << " explains " << fmt("%5.1f", 100 * c.explainedFraction) << " %" << (c.significant ? "  significant" : "")
       << (c.note.empty() ? "" : "  (" + c.note + ")") << "\n";
+  if (!d.selected.empty()) {
+    t << "selected model (regularised fit):";
+    for (const FittedValue& v : d.selected.back().result.fit.fitted)
+      t << " " << v.name << " = " << fmt("%.4g", v.value / v.toSI) << unitSuffix(v.unit) << " " << plusMinus(v.sigma / v.toSI, v.unit) << ";";
+    t << "\n";
+  }
   t << d.verdict << "\n" << d.fingerprint.summary << "\nadequacy: " << d.adequacy.verdict << "\nprediction: " << d.prediction.message << "\n";
   text = t.str();
 }

@@ -344,8 +344,10 @@ Diagnosis diagnose(StageSimulator& sim, const Comparison& cmp, const ModelParams
   }
   if (!d.selected.empty()) {
     std::string names;
-    for (const SelectionStep& s : d.selected) names += (names.empty() ? "" : ", then ") + s.effect + " (" + fmt("%.0f", 100 * s.explainedFraction) + " %)";
-    d.verdict = "Missing, in order: " + names + " of the residual left before it, each significantly above the noise.";
+    for (const SelectionStep& s : d.selected)
+      names += (names.empty() ? "" : ", then ") + s.effect + " (" + fmt("%.0f", 100 * s.explainedFraction) + " %)";
+    d.verdict = "Missing, in order: " + names +
+                ", each explaining that share of the residual left before it, significantly above the noise.";
   } else if (d.fingerprint.aboveNoise) {
     d.verdict = "No candidate explains the residual significantly; it is above the noise floor: see the fingerprint.";
   } else {
