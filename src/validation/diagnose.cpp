@@ -313,8 +313,9 @@ Diagnosis diagnose(StageSimulator& sim, const Comparison& cmp, const ModelParams
       int tried = 0;
       for (const size_t i : rank) {
         if (used[i] || tried >= o.refitTop) continue;
-        const CandidateResult& first0 = d.candidates[i];
-        if (!first0.note.empty() && first0.note.rfind("indistinguishable", 0) != 0) continue;
+        // Nor one the baseline parameters can mimic: it could then only
+        // stand in for a parameter its prior holds at the band's edge.
+        if (!d.candidates[i].note.empty()) continue;
         ++tried;
         say("with " + d.selected.back().effect + ": refitting with " + cands[i].effect);
         CandidateResult cr;

@@ -38,7 +38,6 @@ struct FitParam {
 // at the band's edges (in log for log-scale parameters), beyond 1 outside.
 double priorDeviation(const FitParam& f, double value);
 
-
 // The parameter called `name` for model `p`, or nullopt with `why` set
 // (unknown name, effect not switched on, no rest shape with that parameter).
 std::optional<FitParam> describeParam(const std::string& name, const ModelParams& p, const Measurement& m,
