@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <sstream>
 
 #include "app/exit_codes.h"
@@ -26,7 +27,7 @@ using namespace validation;
 int usage(const std::string& message) {
   std::fprintf(stderr,
                "coilsim validate: %s\n"
-               "usage: coilsim validate FILE [--effects a,b] [--fit young_modulus,...] --out DIR\n"
+               "usage: coilsim validate FILE... [--effects a,b] [--fit young_modulus,...] --out DIR\n"
                "         [--spacing MM] [--push-increment MM] [--no-plots] [--quiet]\n"
                "       coilsim validate FILE --window [--effects a,b] [--fit ...]   (the panel)\n"
                "       coilsim validate FILE --screenshot PNG [--toggle a,b] [--auto-fit]   (the panel off-screen)\n"
@@ -94,13 +95,12 @@ std::string parseWorkbenchArgs(const std::vector<std::string>& args, bool allowE
       a.quiet = true;
     } else if (arg.size() > 1 && arg[0] == '-') {
       return "unknown option \"" + arg + "\"";
-    } else if (a.file.empty()) {
-      a.file = arg;
     } else {
-      return "one measurement file, got \"" + a.file + "\" and \"" + arg + "\"";
+      a.files.push_back(arg);
     }
   }
-  if (a.file.empty()) return "a measurement file (coil-measurement/1) is needed";
+  if (a.files.empty()) return "a measurement file (coil-measurement/1) is needed";
+  a.file = a.files.front();
   if (a.out.empty()) return "--out DIR is needed";
   return "";
 }
@@ -159,12 +159,122 @@ ordered_json stagesJson(const Comparison& cmp, const std::vector<StageComparison
 
 ordered_json fittedJson(const std::vector<FittedValue>& fitted) {
   ordered_json j = ordered_json::object();
-  for (const FittedValue& v : fitted)
+  for (const FittedValue& v : fitted) {
     j[v.name] = {{"value", r6(v.value / v.toSI)},
                  {"sigma", v.identifiable ? ordered_json(r6(v.sigma / v.toSI)) : ordered_json(nullptr)},
                  {"unit", v.unit},
                  {"identifiable", v.identifiable}};
+    if (v.prior.known)
+      j[v.name]["prior"] = {{"nominal", r6(v.prior.nominal / v.toSI)},
+                            {"plausible_low", r6(v.prior.low / v.toSI)},
+                            {"plausible_high", r6(v.prior.high / v.toSI)},
+                            {"deviation", r6(v.priorDeviation)},
+                            {"plausible", v.plausible}};
+  }
   return j;
+}
+
+std::string priorCheckText(const std::vector<FittedValue>& fitted) {
+  std::string out;
+  for (const FittedValue& v : fitted)
+    if (v.prior.known && !v.plausible)
+      out += (out.empty() ? "" : "; ") + v.name + " = " + fmt("%.4g", v.value / v.toSI) + unitSuffix(v.unit) + " is " +
+             fmt("%.2f", v.value / v.prior.nominal) + "x its nominal " + fmt("%.4g", v.prior.nominal / v.toSI) +
+             ", outside the plausible " + fmt("%.4g", v.prior.low / v.toSI) + "-" + fmt("%.4g", v.prior.high / v.toSI) +
+             unitSuffix(v.unit);
+  return out.empty() ? out : "Implausible: " + out + ": evidence that the model lacks something the fit absorbs.";
+}
+
+ordered_json adequacyJson(const Adequacy& a) {
+  ordered_json j;
+  j["explained"] = a.explained;
+  j["verdict"] = a.verdict;
+  ordered_json st = ordered_json::array();
+  for (const StageAdequacy& s : a.stages)
+    st.push_back({{"name", s.stage}, {"reduced_chi2", r6(s.reducedChi2)}, {"critical_999", r6(s.critical)},
+                  {"noise_floor_rms_mm", r6(units::mToMm(s.noiseFloor))}, {"at_noise", s.atNoise}});
+  j["stages"] = st;
+  j["remaining_fingerprint"] = fingerprintJson(a.remaining);
+  return j;
+}
+
+ordered_json predictionJson(const PredictionCheck& p) {
+  ordered_json j;
+  j["done"] = p.done;
+  j["message"] = p.message;
+  if (p.done) {
+    j["stage"] = p.stage;
+    j["fitted_stage_error"] = r6(p.fittedError);
+    j["predicted_stage_error"] = r6(p.predictedError);
+    j["predicted_over_fitted"] = r6(p.ratio);
+  }
+  return j;
+}
+
+std::string adequacyMarkdown(const Adequacy& a, const PredictionCheck& p) {
+  std::ostringstream md;
+  md << "## Adequacy (chi-square per stage against the noise)\n\n"
+     << "| stage | reduced chi2 | noise floor (mm per node) | 99.9 % bound | at the noise |\n|---|---|---|---|---|\n";
+  for (const StageAdequacy& s : a.stages)
+    md << "| " << s.stage << " | " << fmt("%.3g", s.reducedChi2) << " | " << fmt("%.4f", units::mToMm(s.noiseFloor)) << " | "
+       << fmt("%.3g", s.critical) << " | " << (s.atNoise ? "yes" : "no") << " |\n";
+  md << "\n**" << a.verdict << "**\n\n## Prediction check\n\n" << p.message << ".\n\n";
+  return md.str();
+}
+
+ordered_json jointJson(const JointDiagnosis& d, const std::vector<std::string>& files) {
+  ordered_json j;
+  j["files"] = files;
+  j["ok"] = d.ok;
+  if (!d.ok) {
+    j["message"] = d.message;
+    return j;
+  }
+  j["fitted_jointly"] = fittedJson(d.joint.fitted);
+  j["rss_joint_mm2"] = r6(d.joint.rss * 1e6);
+  ordered_json sp = ordered_json::array();
+  for (const ParameterSpread& s : d.spread) {
+    ordered_json per = ordered_json::array(), sig = ordered_json::array();
+    for (size_t i = 0; i < s.perFile.size(); ++i) {
+      per.push_back(r6(s.perFile[i] / s.toSI));
+      sig.push_back(std::isfinite(s.sigmaPerFile[i]) ? ordered_json(r6(s.sigmaPerFile[i] / s.toSI)) : ordered_json(nullptr));
+    }
+    sp.push_back({{"param", s.param}, {"unit", s.unit}, {"joint", r6(s.joint / s.toSI)}, {"per_file", per},
+                  {"sigma_per_file", sig}, {"explained_by_differing", r6(s.explainedFraction)}, {"must_differ", s.mustDiffer}});
+  }
+  j["spread"] = sp;
+  ordered_json ef = ordered_json::array();
+  for (const JointEffect& e : d.effects) {
+    ordered_json per = ordered_json::array();
+    for (double v : e.perFileAfter) per.push_back(r6(v / (d.spread.empty() ? 1 : d.spread[0].toSI)));
+    ef.push_back({{"effect", e.effect}, {"explained_fraction", r6(e.explainedFraction)}, {"significant", e.significant},
+                  {"removes_spread", e.removesSpread}, {"fitted_jointly", fittedJson(e.fit.fitted)}, {"per_file_after", per}});
+  }
+  j["effects"] = ef;
+  j["verdict"] = d.verdict;
+  return j;
+}
+
+std::string jointMarkdown(const JointDiagnosis& d, const std::vector<std::string>& files) {
+  std::ostringstream md;
+  md << "## Joint fit of " << files.size() << " files of one coil\n\n";
+  if (!d.ok) return md.str() + d.message + "\n";
+  md << "| parameter | joint |";
+  for (const std::string& f : files) md << " " << std::filesystem::path(f).filename().string() << " alone |";
+  md << "\n|---|---|";
+  for (size_t i = 0; i < files.size(); ++i) md << "---|";
+  md << "\n";
+  for (const ParameterSpread& s : d.spread) {
+    md << "| " << s.param << " | " << fmt("%.4g", s.joint / s.toSI) << unitSuffix(s.unit) << " |";
+    for (size_t i = 0; i < s.perFile.size(); ++i)
+      md << " " << fmt("%.4g", s.perFile[i] / s.toSI) << " " << plusMinus(s.sigmaPerFile[i] / s.toSI, s.unit) << " |";
+    md << "\n";
+  }
+  for (const JointEffect& e : d.effects)
+    md << "\n- " << e.effect << " on in every file: explains " << fmt("%.1f", 100 * e.explainedFraction) << " % of the joint residual"
+       << (e.significant ? " (significant)" : "") << (e.removesSpread ? ", and one value then fits all files" : "") << ".";
+  md << "\n\n**" << d.verdict << "**\n\n";
+  return md.str();
 }
 
 ordered_json fingerprintJson(const Fingerprint& f) {
@@ -235,6 +345,100 @@ void writePlots(const std::string& dir, const Measurement& m, const std::vector<
   }
 }
 
+namespace {
+
+// Several files of one coil: the fitted parameters shared, each file its own
+// setup and its effects' values from that setup (joint.h).
+int runValidateJoint(const WorkbenchArgs& a) {
+  auto say = [&](const std::string& s) {
+    if (!a.quiet) std::fprintf(stderr, "%s\n", s.c_str());
+  };
+  std::vector<Measurement> ms;
+  std::vector<ModelParams> starts;
+  std::vector<std::string> fit;
+  try {
+    for (const std::string& file : a.files) {
+      ms.push_back(io::readMeasurement(file));
+      ModelParams p = ModelParams::nominal(ms.back());
+      if (!starts.empty()) p.youngModulus = starts[0].youngModulus, p.poissonRatio = starts[0].poissonRatio;  // one coil
+      for (const std::string& e : a.effects) p.effects.push_back(effectFromFile(e, ms.back()));
+      starts.push_back(p);
+    }
+    fit = expandFitNames(a.fit, ms[0]);
+    for (const std::string& f : fit) {
+      std::string why;
+      if (!describeParam(f, starts[0], ms[0], why)) return usage("--fit: " + why);
+    }
+  } catch (const io::InputError& e) {
+    std::fprintf(stderr, "coilsim: %s\n", e.what());
+    return kExitUsage;
+  } catch (const std::invalid_argument& e) {
+    return usage(std::string("--effects: ") + e.what());
+  }
+  if (!makeOutputDirectory("validate", a.out)) return kExitUsage;
+  std::vector<std::unique_ptr<StageSimulator>> sims;
+  std::vector<std::unique_ptr<Comparison>> cmps;
+  std::vector<JointFile> jf;
+  for (size_t i = 0; i < ms.size(); ++i) {
+    sims.push_back(std::make_unique<StageSimulator>(ms[i], simOptionsOf(a)));
+    cmps.push_back(std::make_unique<Comparison>(ms[i]));
+    jf.push_back({sims.back().get(), cmps.back().get(), starts[i]});
+  }
+  JointDiagnosis jd;
+  std::vector<ModelParams> fitted = starts;
+  if (!fit.empty()) {
+    jd = diagnoseJoint(jf, fit, [&](const std::string& s) { say("validate: " + s); });
+    if (jd.ok) fitted = jd.joint.memberParams;
+  }
+  ordered_json j, per = ordered_json::array();
+  j["format"] = "coilsim-validation-report/1";
+  j["effects"] = a.effects;
+  j["fit"] = fit;
+  std::ostringstream md, text;
+  md << "# Validation of " << ms.size() << " files of one coil\n\nEffects on: "
+     << (a.effects.empty() ? std::string("none (the base model)") : ordered_json(a.effects).dump())
+     << "; fitted jointly: " << (fit.empty() ? std::string("nothing (nominal values)") : ordered_json(fit).dump()) << ".\n\n";
+  if (!fit.empty()) md << jointMarkdown(jd, a.files);
+  bool failed = !fit.empty() && !jd.ok;
+  for (size_t i = 0; i < ms.size(); ++i) {
+    const std::vector<StageComparison> before = cmps[i]->compare(sims[i]->run(ModelParams::nominal(ms[i]), false));
+    const std::vector<StageComparison> after = cmps[i]->compare(sims[i]->run(fitted[i], false));
+    const Adequacy adq = adequacy(*cmps[i], after);
+    ordered_json f;
+    f["file"] = a.files[i];
+    f["measurement"] = ms[i].name;
+    f["stages"] = stagesJson(*cmps[i], after);
+    f["stages_before"] = stagesJson(*cmps[i], before);
+    f["adequacy"] = adequacyJson(adq);
+    per.push_back(f);
+    md << "## " << ms[i].name << " (`" << a.files[i] << "`)\n\n" << stageTable(ms[i], before, after) << "\n**"
+       << adq.verdict << "**\n\n";
+    text << a.files[i] << "\n" << stageTable(ms[i], before, after) << "adequacy: " << adq.verdict << "\n";
+    for (const StageComparison& s : after) failed = failed || !s.ok;
+  }
+  j["files"] = per;
+  if (!fit.empty()) j["joint"] = jointJson(jd, a.files);
+  try {
+    io::writeFileAtomic((std::filesystem::path(a.out) / "report.json").string(), io::formatJson(j));
+    io::writeFileAtomic((std::filesystem::path(a.out) / "report.md").string(), md.str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "coilsim validate: %s\n", e.what());
+    return kExitUsage;
+  }
+  std::printf("%s", text.str().c_str());
+  if (!fit.empty()) {
+    if (jd.ok)
+      for (const FittedValue& v : jd.joint.fitted)
+        std::printf("%s = %.5g%s %s (joint)\n", v.name.c_str(), v.value / v.toSI, unitSuffix(v.unit).c_str(),
+                    plusMinus(v.sigma / v.toSI, v.unit).c_str());
+    std::printf("joint: %s\n", jd.ok ? jd.verdict.c_str() : jd.message.c_str());
+  }
+  std::printf("report: %s\n", (std::filesystem::path(a.out) / "report.json").string().c_str());
+  return failed ? kExitFailure : kExitOk;
+}
+
+}  // namespace
+
 int runValidate(const std::vector<std::string>& args) {
   // The panel's own options first; the rest are the workbench's.
   WindowArgs w;
@@ -266,6 +470,7 @@ int runValidate(const std::vector<std::string>& args) {
     }
     return runValidateWindow(a, w);
   }
+  if (a.files.size() > 1) return runValidateJoint(a);
   auto say = [&](const std::string& s) {
     if (!a.quiet) std::fprintf(stderr, "%s\n", s.c_str());
   };
@@ -319,6 +524,17 @@ int runValidate(const std::vector<std::string>& args) {
   j["residual_count"] = r.residual.size();
   const Fingerprint fp = fingerprint(cmp, after);
   j["fingerprint"] = fingerprintJson(fp);
+  const std::string priorText = priorCheckText(r.fitted);
+  j["prior_check"] = priorText.empty() ? std::string("every fitted value is inside its plausible band") : priorText;
+  const Adequacy adq = adequacy(cmp, after);
+  j["adequacy"] = adequacyJson(adq);
+  PredictionCheck pred;
+  pred.message = "nothing fitted: no prediction check";
+  if (r.ok && !fit.empty() && m.stages.size() >= 2) {
+    say("validate: prediction check (fitting all stages but the last)...");
+    pred = predictLastStage(cmp, sim.options(), start, fit, after.back().metrics.stageError, false);
+  }
+  j["prediction"] = predictionJson(pred);
   std::vector<std::string> written, warnings;
   if (a.plots) writePlots(a.out, m, after, written, warnings);
   j["images"] = written;
@@ -341,6 +557,8 @@ int runValidate(const std::vector<std::string>& args) {
     md << "\n\n";
   }
   md << "Where the remaining residual lies: " << fp.summary << "\n\n";
+  md << "**Prior check:** " << (priorText.empty() ? "every fitted value is inside its plausible band." : priorText) << "\n\n";
+  md << adequacyMarkdown(adq, pred);
   for (const std::string& w : written) md << "![" << w << "](" << w << ")\n";
   for (const std::string& w : warnings) md << "\nWarning: " << w << "\n";
   try {
@@ -355,6 +573,8 @@ int runValidate(const std::vector<std::string>& args) {
   for (const FittedValue& v : r.fitted)
     std::printf("%s = %.5g%s %s\n", v.name.c_str(), v.value / v.toSI, unitSuffix(v.unit).c_str(),
                 plusMinus(v.sigma / v.toSI, v.unit).c_str());
+  if (!priorText.empty()) std::printf("%s\n", priorText.c_str());
+  std::printf("adequacy: %s\nprediction: %s\n", adq.verdict.c_str(), pred.message.c_str());
   std::printf("report: %s\n", (std::filesystem::path(a.out) / "report.json").string().c_str());
   for (const StageComparison& s : after)
     if (!s.ok) {

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "validation/diagnose.h"
+#include "validation/joint.h"
 
 namespace coilsim::app {
 
@@ -19,7 +20,8 @@ int runValidate(const std::vector<std::string>& args);
 
 // Shared with diagnose.
 struct WorkbenchArgs {
-  std::string file, out;
+  std::string file, out;           // file: the first of `files`
+  std::vector<std::string> files;  // several measurements of the same coil (fitted jointly)
   std::vector<std::string> effects, fit;
   double spacingMm = 2.0, pushIncrementMm = 2.0;
   bool plots = true, quiet = false;
@@ -40,8 +42,17 @@ bool makeOutputDirectory(const std::string& command, const std::string& dir);
 // stage_error, mean_displacement_mm, mean_distance_mm, and where the
 // residual lies (components, thirds of the arc length, noise floor).
 nlohmann::ordered_json stagesJson(const validation::Comparison& cmp, const std::vector<validation::StageComparison>& s);
-// name -> {value, sigma, unit} in edge units.
+// name -> {value, sigma, unit, prior: {nominal, plausible_low, plausible_high,
+// deviation, plausible}} in edge units.
 nlohmann::ordered_json fittedJson(const std::vector<validation::FittedValue>& fitted);
+// The adequacy test, the prediction check and a joint diagnosis, as JSON and Markdown.
+nlohmann::ordered_json adequacyJson(const validation::Adequacy& a);
+nlohmann::ordered_json predictionJson(const validation::PredictionCheck& p);
+nlohmann::ordered_json jointJson(const validation::JointDiagnosis& d, const std::vector<std::string>& files);
+std::string adequacyMarkdown(const validation::Adequacy& a, const validation::PredictionCheck& p);
+std::string jointMarkdown(const validation::JointDiagnosis& d, const std::vector<std::string>& files);
+// The prior check of fitted values in words ("" when all are plausible).
+std::string priorCheckText(const std::vector<validation::FittedValue>& fitted);
 nlohmann::ordered_json fingerprintJson(const validation::Fingerprint& f);
 
 // The per-stage Markdown table, before and (when `after` is not empty) after.

@@ -134,6 +134,65 @@ Fingerprint fingerprint(const Comparison& cmp, const std::vector<StageComparison
   return f;
 }
 
+namespace {
+
+// The refit of candidate `c` added to `base` (whose fitted names are
+// `baseFit`), regularised, judged against the residual `rssRef` of the
+// model it extends: explained fraction and significance (diagnose.h).
+CandidateResult refit(StageSimulator& sim, const Comparison& cmp, const ModelParams& base,
+                      const std::vector<std::string>& baseFit, const Candidate& c, double rssRef, double sigma,
+                      CandidateResult cr) {
+  ModelParams s = withCandidate(base, c);
+  for (size_t k = 0; k < c.params.size(); ++k) setParam(s, c.params[k], c.typicalValue[k]);
+  FitOptions f2;
+  f2.params = baseFit;
+  f2.params.insert(f2.params.end(), c.params.begin(), c.params.end());
+  f2.regularised = true;
+  cr.fit = identify(sim, cmp, s, f2);
+  if (!cr.fit.ok) {
+    cr.note = "refit failed: " + cr.fit.message;
+    return cr;
+  }
+  cr.refitted = true;
+  const double m = double(cr.fit.residual.size());
+  const double drop = rssRef - cr.fit.rss;
+  cr.explainedFraction = std::clamp(drop / rssRef, 0.0, 1.0);
+  const int pc = std::max<int>(1, int(c.params.size()));
+  const double dof = std::max(1.0, m - double(f2.params.size()));
+  const double F = drop > 0 ? (drop / pc) / (cr.fit.rss / dof) : 0.0;
+  const double removedRmsPerNode = std::sqrt(std::max(0.0, drop) / (m / 3.0));
+  cr.significant = F > fCritical(pc) && removedRmsPerNode > sigma && cr.explainedFraction >= kMinExplained;
+  cr.stageErrorAfter.clear();
+  for (const StageComparison& sc : cmp.compare(sim.run(cr.fit.params, true))) cr.stageErrorAfter.push_back(sc.metrics.stageError);
+  return cr;
+}
+
+std::vector<std::string> fittedNames(const FitResult& f) {
+  std::vector<std::string> out;
+  for (const FittedValue& v : f.fitted) out.push_back(v.name);
+  return out;
+}
+
+// The prior check of a free fit: the implausible values, in words.
+void checkPriors(const FitResult& f, std::vector<std::string>& implausible, std::string& verdict) {
+  std::string words;
+  for (const FittedValue& v : f.fitted) {
+    if (v.plausible || !v.prior.known) continue;
+    implausible.push_back(v.name);
+    if (!words.empty()) words += "; ";
+    words += v.name + " = " + fmt("%.4g", v.value / v.toSI) + " " + v.unit + ", " +
+             fmt("%.2f", v.value / v.prior.nominal) + "x its nominal " + fmt("%.4g", v.prior.nominal / v.toSI) +
+             ", outside the plausible " + fmt("%.4g", v.prior.low / v.toSI) + "-" + fmt("%.4g", v.prior.high / v.toSI) +
+             " " + v.unit;
+  }
+  if (!words.empty())
+    verdict = "The baseline fits only with implausible values (" + words +
+              "): the model lacks something that the fit absorbs into them. Candidates are ranked against the "
+              "regularised baseline (the values held to their plausible bands).";
+}
+
+}  // namespace
+
 Diagnosis diagnose(StageSimulator& sim, const Comparison& cmp, const ModelParams& start, const DiagnoseOptions& o) {
   Diagnosis d;
   auto say = [&](const std::string& s) {
@@ -150,11 +209,24 @@ Diagnosis diagnose(StageSimulator& sim, const Comparison& cmp, const ModelParams
     d.message = "baseline fit failed: " + d.baseline.message;
     return d;
   }
+  checkPriors(d.baseline, d.implausible, d.priorVerdict);
+  if (d.implausible.empty()) {
+    d.regularisedBaseline = d.baseline;  // the penalty is zero inside the bands: the same fit
+    d.regularisedBaseline.regularised = true;
+  } else {
+    say("baseline: implausible values, fitting again with priors in force");
+    fo.regularised = true;
+    d.regularisedBaseline = identify(sim, cmp, start, fo);
+    if (!d.regularisedBaseline.ok) {
+      d.message = "regularised baseline fit failed: " + d.regularisedBaseline.message;
+      return d;
+    }
+  }
+  const FitResult& base = d.regularisedBaseline;
   d.baselineStages = cmp.compare(sim.run(d.baseline.params, true));
-  d.fingerprint = fingerprint(cmp, d.baselineStages);
-  const Eigen::VectorXd r0 = d.baseline.residual;
-  const double rss0 = std::max(d.baseline.rss, 1e-300);
-  const double m = double(r0.size());
+  d.fingerprint = fingerprint(cmp, d.implausible.empty() ? d.baselineStages : cmp.compare(sim.run(base.params, true)));
+  const Eigen::VectorXd r0 = base.residual;
+  const double rss0 = std::max(base.rss, 1e-300);
   double sigma = 0;
   for (size_t k = 0; k < cmp.measurement().stages.size(); ++k) sigma = std::max(sigma, cmp.stageSigma(k));
 
@@ -164,7 +236,7 @@ Diagnosis diagnose(StageSimulator& sim, const Comparison& cmp, const ModelParams
     say("screening " + c.effect);
     CandidateResult cr;
     cr.effect = c.effect;
-    const ModelParams off = withCandidate(d.baseline.params, c);
+    const ModelParams off = withCandidate(base.params, c);
     const Eigen::VectorXd rOff = evaluateResiduals(sim, cmp, off, true);
     if (rOff.size() != r0.size()) {
       cr.note = "the model fails with this effect switched on";
@@ -172,10 +244,7 @@ Diagnosis diagnose(StageSimulator& sim, const Comparison& cmp, const ModelParams
       continue;
     }
     Eigen::MatrixXd Jc(r0.size(), std::max<Eigen::Index>(1, Eigen::Index(c.params.size())));
-    if (c.params.empty()) {
-      ModelParams on = off;  // on at defaults: a single column on - off
-      Jc.col(0) = rOff - r0;
-    }
+    if (c.params.empty()) Jc.col(0) = rOff - r0;  // on at defaults: a single column on - off
     for (size_t k = 0; k < c.params.size(); ++k) {
       ModelParams on = off;
       setParam(on, c.params[k], c.typicalValue[k]);
@@ -183,12 +252,12 @@ Diagnosis diagnose(StageSimulator& sim, const Comparison& cmp, const ModelParams
       Jc.col(Eigen::Index(k)) = rOn.size() == rOff.size() ? Eigen::VectorXd((rOn - rOff) / (c.typicalValue[k] - c.offValue[k]))
                                                           : Eigen::VectorXd::Zero(r0.size());
     }
-    const Eigen::MatrixXd& J0 = d.baseline.jacobian;
+    const Eigen::MatrixXd& J0 = base.jacobian;
     Eigen::MatrixXd A(r0.size(), J0.cols() + Jc.cols());
     A << J0, Jc;
-    const Eigen::VectorXd base = c.params.empty() ? r0 : rOff;
-    const Eigen::VectorXd delta = A.colPivHouseholderQr().solve(-base);
-    const double predicted = (base + A * delta).squaredNorm();
+    const Eigen::VectorXd rb = c.params.empty() ? r0 : rOff;
+    const Eigen::VectorXd delta = A.colPivHouseholderQr().solve(-rb);
+    const double predicted = (rb + A * delta).squaredNorm();
     cr.screenedFraction = std::clamp((rss0 - predicted) / rss0, 0.0, 1.0);
     if (c.params.empty()) cr.screenedFraction = std::clamp((rss0 - rOff.squaredNorm()) / rss0, 0.0, 1.0);
     // How much of the candidate's signature the baseline parameters can already make.
@@ -220,37 +289,80 @@ Diagnosis diagnose(StageSimulator& sim, const Comparison& cmp, const ModelParams
     if (!c.params.empty() && refits >= o.refitTop) continue;
     if (!c.params.empty()) ++refits;
     say("refitting with " + c.effect);
-    ModelParams s = withCandidate(d.baseline.params, c);
-    for (size_t k = 0; k < c.params.size(); ++k) setParam(s, c.params[k], c.typicalValue[k]);
-    FitOptions f2;
-    f2.params = baseFit;
-    f2.params.insert(f2.params.end(), c.params.begin(), c.params.end());
-    cr.fit = identify(sim, cmp, s, f2);
-    if (!cr.fit.ok) {
-      cr.note = "refit failed: " + cr.fit.message;
-      continue;
-    }
-    cr.refitted = true;
-    const double drop = rss0 - cr.fit.rss;
-    cr.explainedFraction = std::clamp(drop / rss0, 0.0, 1.0);
-    const int pc = std::max<int>(1, int(c.params.size()));
-    const double dof = std::max(1.0, m - double(f2.params.size()));
-    const double F = drop > 0 ? (drop / pc) / (cr.fit.rss / dof) : 0.0;
-    const double removedRmsPerNode = std::sqrt(std::max(0.0, drop) / (m / 3.0));
-    cr.significant = F > fCritical(pc) && removedRmsPerNode > sigma && cr.explainedFraction >= kMinExplained;
-    for (const StageComparison& sc : cmp.compare(sim.run(cr.fit.params, true))) cr.stageErrorAfter.push_back(sc.metrics.stageError);
+    cr = refit(sim, cmp, base.params, baseFit, c, rss0, sigma, cr);
   }
-  std::stable_sort(d.candidates.begin(), d.candidates.end(), [](const CandidateResult& a, const CandidateResult& b) {
-    if (a.significant != b.significant) return a.significant;
-    return a.explainedFraction > b.explainedFraction;
+  std::vector<size_t> rank = order;
+  std::stable_sort(rank.begin(), rank.end(), [&](size_t a, size_t b) {
+    const CandidateResult &A = d.candidates[a], &B = d.candidates[b];
+    if (A.significant != B.significant) return A.significant;
+    return A.explainedFraction > B.explainedFraction;
   });
-  if (!d.candidates.empty() && d.candidates.front().significant)
-    d.verdict = d.candidates.front().effect + " explains " + fmt("%.0f", 100 * d.candidates.front().explainedFraction) +
-                " % of the baseline residual, significantly above the noise.";
-  else if (d.fingerprint.aboveNoise)
+  // 3. Forward selection: the best significant candidate joins the model;
+  // the others are refitted on top of it, until none is significant.
+  FitResult current = base;
+  std::vector<bool> used(cands.size(), false);
+  if (!rank.empty() && d.candidates[rank.front()].significant) {
+    const size_t first = rank.front();
+    used[first] = true;
+    d.selected.push_back({cands[first].effect, d.candidates[first].explainedFraction, d.candidates[first]});
+    current = d.candidates[first].fit;
+    while (int(d.selected.size()) < o.maxEffects) {
+      const double rssCur = std::max(current.rss, 1e-300);
+      SelectionStep best;
+      bool found = false;
+      int tried = 0;
+      for (const size_t i : rank) {
+        if (used[i] || tried >= o.refitTop) continue;
+        // Nor one the baseline parameters can mimic: it could then only
+        // stand in for a parameter its prior holds at the band's edge.
+        if (!d.candidates[i].note.empty()) continue;
+        ++tried;
+        say("with " + d.selected.back().effect + ": refitting with " + cands[i].effect);
+        CandidateResult cr;
+        cr.effect = cands[i].effect;
+        cr = refit(sim, cmp, current.params, fittedNames(current), cands[i], rssCur, sigma, cr);
+        if (cr.significant && (!found || cr.explainedFraction > best.explainedFraction)) {
+          best = {cands[i].effect, cr.explainedFraction, cr};
+          found = true;
+        }
+      }
+      if (!found) break;
+      for (size_t i = 0; i < cands.size(); ++i)
+        if (cands[i].effect == best.effect) used[i] = true;
+      current = best.result.fit;
+      d.selected.push_back(best);
+    }
+  }
+  std::vector<CandidateResult> ranked;
+  for (const size_t i : rank) ranked.push_back(d.candidates[i]);
+  d.candidates = ranked;
+  // The selected model without priors too: both fits are reported.
+  if (!d.selected.empty()) {
+    say("free fit of the selected model");
+    FitOptions ff;
+    ff.params = fittedNames(current);
+    d.selected.back().result.freeFit = identify(sim, cmp, current.params, ff);
+  }
+  if (!d.selected.empty()) {
+    std::string names;
+    for (const SelectionStep& s : d.selected)
+      names += (names.empty() ? "" : ", then ") + s.effect + " (" + fmt("%.0f", 100 * s.explainedFraction) + " %)";
+    d.verdict = "Missing, in order: " + names +
+                ", each explaining that share of the residual left before it, significantly above the noise.";
+  } else if (d.fingerprint.aboveNoise) {
     d.verdict = "No candidate explains the residual significantly; it is above the noise floor: see the fingerprint.";
-  else
+  } else {
     d.verdict = "The base model explains the data to the noise level: no effect is needed.";
+  }
+  if (!d.priorVerdict.empty()) d.verdict = d.priorVerdict + " " + d.verdict;
+  // 4. The final model: adequacy and the prediction check.
+  d.finalStages = cmp.compare(sim.run(current.params, false));
+  d.adequacy = adequacy(cmp, d.finalStages);
+  if (o.predict && cmp.measurement().stages.size() >= 2) {
+    say("prediction check: fitting all stages but the last");
+    d.prediction = predictLastStage(cmp, sim.options(), current.params, fittedNames(current),
+                                    d.finalStages.back().metrics.stageError, true);
+  }
   d.ok = true;
   return d;
 }

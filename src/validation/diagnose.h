@@ -15,6 +15,16 @@
 //     so the F test alone overstates certainty), AND the candidate must
 //     explain at least 25 % of the residual (trimming a residual that comes
 //     from elsewhere, e.g. two rod models' differences, is not a finding).
+// Priors: the baseline is fitted free, and its values are checked against
+// their plausible bands (params.h); a value outside is reported as evidence
+// that something is missing, and the ranking then starts from the
+// regularised baseline (MAP), so that an effect the free fit absorbed into
+// an implausible E can show. Every candidate refit is regularised.
+// Forward selection: after the best significant candidate, the others are
+// refitted with it in the model and judged on what they explain of its
+// residual, by the same test; it stops when none is significant (or after
+// maxEffects). Then the final model's adequacy (adequacy.h) and the
+// prediction check.
 // The fingerprint describes r0 so a user can reason about an effect not in
 // the list: its split along gravity / along the coil / across, where along
 // the arc length it concentrates, how it grows with the deployed length.
@@ -22,7 +32,7 @@
 #include <string>
 #include <vector>
 
-#include "validation/identify.h"
+#include "validation/adequacy.h"
 
 namespace coilsim::validation {
 
@@ -43,17 +53,6 @@ Candidate candidateFor(const std::string& effect, const Measurement& m);
 // `p` with the candidate switched on at its off values.
 ModelParams withCandidate(const ModelParams& p, const Candidate& c);
 
-struct Fingerprint {
-  std::vector<double> rmsAlongGravity, rmsAlongCoil, rmsAcross;  // (stages) m, per node
-  std::vector<double> rmsTotal;                                  // (stages) m, per node
-  std::vector<double> shareProximal, shareMiddle, shareDistal;    // (stages) of sum |r|^2, thirds of the arc length
-  double growthExponent = 0;  // RMS ~ l^k over the stages' deployed lengths (0 with one stage)
-  bool aboveNoise = false;    // RMS per coordinate above 1.5 sigma in some stage
-  std::string summary;        // one paragraph
-};
-
-Fingerprint fingerprint(const Comparison& cmp, const std::vector<StageComparison>& stages);
-
 struct CandidateResult {
   std::string effect;
   double screenedFraction = 0;   // linear prediction
@@ -61,24 +60,45 @@ struct CandidateResult {
   bool refitted = false;
   bool significant = false;
   std::string note;              // e.g. "indistinguishable from young_modulus"
-  FitResult fit;                 // when refitted
+  FitResult fit;                 // when refitted: regularised (priors in force)
+  FitResult freeFit;             // for a selected effect: the same fit without priors
   std::vector<double> stageErrorAfter;  // (stages) in file order
+};
+
+// One step of forward selection: the effect added to the model of the
+// steps before, and what it explained of that model's residual.
+struct SelectionStep {
+  std::string effect;
+  double explainedFraction = 0;  // of the previous model's residual
+  CandidateResult result;        // the refit with every effect selected so far
 };
 
 struct Diagnosis {
   bool ok = false;
   std::string message;
-  FitResult baseline;
+  FitResult baseline;                    // free fit of the baseline parameters
+  FitResult regularisedBaseline;         // the same with priors in force (the reference for ranking)
   std::vector<StageComparison> baselineStages;
-  std::vector<CandidateResult> candidates;  // best first
+  // The prior check: the free baseline's values outside their plausible
+  // band, and what that says ("" when all are plausible).
+  std::vector<std::string> implausible;
+  std::string priorVerdict;
+  std::vector<CandidateResult> candidates;  // first round, best first
+  std::vector<SelectionStep> selected;      // forward selection, in order
   Fingerprint fingerprint;
   std::string verdict;
+  // Of the final model (baseline plus the selected effects).
+  std::vector<StageComparison> finalStages;
+  Adequacy adequacy;
+  PredictionCheck prediction;
 };
 
 struct DiagnoseOptions {
   std::vector<std::string> fit = {"young_modulus"};  // baseline parameters (young_modulus always)
   std::vector<Candidate> candidates;                 // empty: defaultCandidates
   int refitTop = 3;
+  int maxEffects = 3;        // forward selection stops after this many effects
+  bool predict = true;       // the prediction check (one more fit)
   std::function<void(const std::string&)> progress;  // one line per phase
 };
 

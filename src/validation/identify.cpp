@@ -18,9 +18,7 @@ double toVar(const FitParam& f, double v) { return f.logScale ? std::log(v) : v 
 double fromVar(const FitParam& f, double z) { return f.logScale ? std::exp(z) : z * (f.hi - f.lo); }
 
 struct Problem {
-  StageSimulator* sim = nullptr;
-  const Comparison* cmp = nullptr;
-  ModelParams params;
+  std::vector<FitMember> members;
   std::vector<FitParam> fit;
   const FitOptions* options = nullptr;
   int evaluations = 0;
@@ -38,14 +36,21 @@ double objective(const std::vector<double>& z, std::vector<double>& grad, void* 
     P.stopped = true;
     throw nlopt::forced_stop();
   }
-  ModelParams p = P.params;
-  for (size_t k = 0; k < z.size(); ++k) setParam(p, P.fit[k].name, fromVar(P.fit[k], z[k]));
-  const auto sims = P.sim->run(p, true);
-  const Eigen::VectorXd r = P.cmp->residuals(sims);
-  const Eigen::VectorXd s = P.cmp->sigmas(sims);
+  Eigen::VectorXd r, s;
+  for (const FitMember& mb : P.members) {
+    ModelParams p = mb.start;
+    for (size_t k = 0; k < z.size(); ++k) setParam(p, P.fit[k].name, fromVar(P.fit[k], z[k]));
+    const auto sims = mb.sim->run(p, true);
+    const Eigen::VectorXd ri = mb.cmp->residuals(sims), si = mb.cmp->sigmas(sims);
+    Eigen::VectorXd r2(r.size() + ri.size()), s2(s.size() + si.size());
+    r2 << r, ri;
+    s2 << s, si;
+    r.swap(r2), s.swap(s2);
+  }
   ++P.evaluations;
   double chi2 = 1e30;
   if (r.size() == Eigen::Index(P.residualSize) && r.allFinite()) chi2 = r.cwiseQuotient(s).squaredNorm();
+
   const double rms = r.size() ? std::sqrt(r.squaredNorm() / double(r.size())) : 0.0;
   P.history.push_back(rms);
   if (chi2 < P.best) P.best = chi2, P.bestZ = z;
@@ -58,6 +63,46 @@ double objective(const std::vector<double>& z, std::vector<double>& grad, void* 
 Eigen::VectorXd evaluateResiduals(StageSimulator& sim, const Comparison& cmp, const ModelParams& p, bool warm) {
   return cmp.residuals(sim.run(p, warm));
 }
+
+namespace {
+
+// Stacked residuals of every member with the members' models `ps`.
+Eigen::VectorXd stacked(const std::vector<FitMember>& members, const std::vector<ModelParams>& ps, bool warm,
+                        Eigen::VectorXd* sigmas = nullptr) {
+  Eigen::VectorXd r, s;
+  for (size_t i = 0; i < members.size(); ++i) {
+    const auto sims = members[i].sim->run(ps[i], warm);
+    const Eigen::VectorXd ri = members[i].cmp->residuals(sims), si = members[i].cmp->sigmas(sims);
+    Eigen::VectorXd r2(r.size() + ri.size()), s2(s.size() + si.size());
+    r2 << r, ri;
+    s2 << s, si;
+    r.swap(r2), s.swap(s2);
+  }
+  if (sigmas) *sigmas = s;
+  return r;
+}
+
+Eigen::MatrixXd jointJacobian(const std::vector<FitMember>& members, const std::vector<ModelParams>& ps,
+                              const std::vector<FitParam>& params) {
+  Eigen::MatrixXd J;
+  for (size_t k = 0; k < params.size(); ++k) {
+    const FitParam& f = params[k];
+    const double v = getParam(ps[0], f.name);
+    // A step of 1e-3 of the variable's scale, kept inside the bounds.
+    double h = f.logScale ? 1e-3 * v : 1e-3 * (f.hi - f.lo);
+    const double up = std::min(v + h, f.hi), down = std::max(v - h, f.lo);
+    std::vector<ModelParams> a = ps, b = ps;
+    for (auto& x : a) setParam(x, f.name, up);
+    for (auto& x : b) setParam(x, f.name, down);
+    const Eigen::VectorXd ra = stacked(members, a, true), rb = stacked(members, b, true);
+    if (J.size() == 0) J.resize(ra.size(), Eigen::Index(params.size()));
+    if (ra.size() != J.rows() || rb.size() != J.rows()) return {};
+    J.col(Eigen::Index(k)) = (ra - rb) / (up - down);
+  }
+  return J;
+}
+
+}  // namespace
 
 Eigen::MatrixXd residualJacobian(StageSimulator& sim, const Comparison& cmp, const ModelParams& p,
                                  const std::vector<FitParam>& params) {
@@ -80,30 +125,52 @@ Eigen::MatrixXd residualJacobian(StageSimulator& sim, const Comparison& cmp, con
 }
 
 FitResult identify(StageSimulator& sim, const Comparison& cmp, const ModelParams& start, const FitOptions& options) {
+  return identifyJoint({{&sim, &cmp, start}}, options);
+}
+
+FitResult identifyJoint(const std::vector<FitMember>& members, const FitOptions& options) {
   FitResult res;
+  if (members.empty()) {
+    res.message = "no measurement to fit";
+    return res;
+  }
+  const ModelParams& start = members[0].start;
   res.params = start;
   Problem P;
-  P.sim = &sim, P.cmp = &cmp, P.params = start, P.options = &options;
+  P.members = members, P.options = &options;
   for (const std::string& name : options.params) {
     std::string why;
-    const auto f = describeParam(name, start, cmp.measurement(), why);
-    if (!f) {
-      res.message = why;
-      return res;
+    for (const FitMember& mb : members) {
+      const auto f = describeParam(name, mb.start, mb.cmp->measurement(), why);
+      if (!f) {
+        res.message = why;
+        return res;
+      }
+      if (&mb != &members[0]) continue;
+      FitParam fp = *f;
+      if (options.regularised && fp.prior.known)
+        fp.lo = std::max(fp.lo, fp.prior.low), fp.hi = std::min(fp.hi, fp.prior.high);
+      P.fit.push_back(fp);
     }
-    P.fit.push_back(*f);
   }
   // A cold evaluation (push from zero) fixes the equilibrium branch the warm starts follow.
-  const auto sims0 = sim.run(start, false);
-  const Eigen::VectorXd r0 = cmp.residuals(sims0);
-  for (const auto& s : sims0)
-    if (!s.ok) {
-      res.message = "the start model fails: " + s.message;
-      res.residual = r0;
-      return res;
-    }
+  Eigen::VectorXd r0;
+  for (const FitMember& mb : members) {
+    const auto sims0 = mb.sim->run(mb.start, false);
+    const Eigen::VectorXd ri = mb.cmp->residuals(sims0);
+    for (const auto& s : sims0)
+      if (!s.ok) {
+        res.message = "the start model fails: " + s.message;
+        res.residual = ri;
+        return res;
+      }
+    Eigen::VectorXd r2(r0.size() + ri.size());
+    r2 << r0, ri;
+    r0.swap(r2);
+  }
   P.residualSize = size_t(r0.size());
   const size_t n = P.fit.size();
+  std::vector<double> zBest;
   if (n > 0) {
     std::vector<double> z(n), lo(n), hi(n);
     for (size_t k = 0; k < n; ++k) {
@@ -139,17 +206,24 @@ FitResult identify(StageSimulator& sim, const Comparison& cmp, const ModelParams
     }
     if (!P.bestZ.empty()) z = P.bestZ;
     for (size_t k = 0; k < n; ++k) setParam(res.params, P.fit[k].name, fromVar(P.fit[k], z[k]));
+    zBest = z;
+  }
+  res.memberParams.clear();
+  for (const FitMember& mb : members) {
+    ModelParams p = mb.start;
+    for (size_t k = 0; k < n; ++k) setParam(p, P.fit[k].name, fromVar(P.fit[k], zBest[k]));
+    res.memberParams.push_back(p);
   }
   res.evaluations = P.evaluations;
   res.history = P.history;
-  const auto sims = sim.run(res.params, true);
-  res.residual = cmp.residuals(sims);
+  Eigen::VectorXd sig;
+  res.residual = stacked(members, res.memberParams, true, &sig);
   res.rss = res.residual.squaredNorm();
-  res.chi2 = res.residual.cwiseQuotient(cmp.sigmas(sims)).squaredNorm();
+  res.chi2 = res.residual.cwiseQuotient(sig).squaredNorm();
   const double m = double(res.residual.size());
   std::set<size_t> unseen;  // parameters the data do not see
   if (n > 0) {
-    res.jacobian = residualJacobian(sim, cmp, res.params, P.fit);
+    res.jacobian = jointJacobian(members, res.memberParams, P.fit);
     const double s2 = res.rss / std::max(1.0, m - double(n));
     if (res.jacobian.size()) {
       // In scaled variables (each column times its parameter's magnitude),
@@ -179,8 +253,12 @@ FitResult identify(StageSimulator& sim, const Comparison& cmp, const ModelParams
     v.value = getParam(res.params, v.name);
     v.sigma = res.covariance.size() ? std::sqrt(std::max(0.0, res.covariance(Eigen::Index(k), Eigen::Index(k)))) : NAN;
     if (unseen.count(k)) v.identifiable = false, v.sigma = INFINITY;
+    v.prior = P.fit[k].prior;
+    v.priorDeviation = priorDeviation(P.fit[k], v.value);
+    v.plausible = !v.prior.known || (v.value >= v.prior.low && v.value <= v.prior.high);
     res.fitted.push_back(v);
   }
+  res.regularised = options.regularised;
   res.ok = true;
   return res;
 }

@@ -33,6 +33,14 @@ struct FitOptions {
   std::vector<std::string> params;  // names (params.h); empty: nothing fitted, only evaluated
   int maxEvaluations = 120;
   double chi2Tolerance = 0.01;
+  // Regularised least squares: each parameter with a prior is held to its
+  // plausible band (params.h), the MAP estimate under a prior that is flat
+  // inside the band and zero outside. A soft wall (a quadratic penalty
+  // beyond the band) was tried first: the node residuals' chi^2 counts
+  // thousands of correlated terms, and it bought its way through any such
+  // wall (E held at 4.3x its nominal instead of 2x on the self-contact
+  // reference file).
+  bool regularised = false;
   // Called after each evaluation (evaluation count, RMS residual per coordinate in m).
   std::function<void(int, double)> progress;
   // Asked before each evaluation (a window's Stop button); true ends the fit
@@ -48,18 +56,25 @@ struct FittedValue {
   // Jacobian, or a combination with others, is zero: an effect that never
   // acts in these stages); sigma is then infinite, not the pseudo-inverse's 0.
   bool identifiable = true;
+  // The prior (params.h): where the value lies in its plausible band (0 at
+  // the nominal, +-1 at the edges) and whether it is inside.
+  Prior prior;
+  double priorDeviation = 0;
+  bool plausible = true;
 };
 
 struct FitResult {
   bool ok = false;
   std::string message;
-  ModelParams params;                 // the fitted model
+  ModelParams params;                 // the fitted model (of the first file in a joint fit)
+  std::vector<ModelParams> memberParams;  // (files) each file's fitted model in a joint fit
   std::vector<FittedValue> fitted;    // one per FitOptions::params
   Eigen::VectorXd residual;           // at the optimum, m
   Eigen::MatrixXd jacobian;           // d residual / d parameter (SI), at the optimum
   Eigen::MatrixXd covariance;         // SI
   double rss = 0;                     // m^2
   double chi2 = 0;
+  bool regularised = false;
   int evaluations = 0;
   std::vector<double> history;        // RMS residual per coordinate (m) after each evaluation
 };
@@ -68,6 +83,19 @@ struct FitResult {
 // effect switched on). Fails (ok = false, message) on an unknown parameter
 // or when no simulation succeeds.
 FitResult identify(StageSimulator& sim, const Comparison& cmp, const ModelParams& start, const FitOptions& options);
+
+// One file of a joint fit: its simulator, its comparison and its start
+// model (its own setup: medium, effects' values from that setup).
+struct FitMember {
+  StageSimulator* sim = nullptr;
+  const Comparison* cmp = nullptr;
+  ModelParams start;
+};
+
+// Several measurements of the same coil fitted together: the named
+// parameters take one value for all files (set in each file's model), the
+// residuals of all files stacked. Fails like identify().
+FitResult identifyJoint(const std::vector<FitMember>& members, const FitOptions& options);
 
 // Residuals of `p` (a warm-started evaluation), m.
 Eigen::VectorXd evaluateResiduals(StageSimulator& sim, const Comparison& cmp, const ModelParams& p, bool warm);

@@ -11,13 +11,32 @@
 
 namespace coilsim::validation {
 
+// What is physically plausible for a parameter before any data: a nominal
+// value and a band (SI). For the coil's Young's modulus the nominal is the
+// file's and the band -50 %/+100 % around it: a wound platinum(-tungsten)
+// coil's stiffness-equivalent modulus is not a handbook constant (bulk
+// platinum 168 GPa, Pt-8W about 200 GPa; the winding makes the wire-
+// equivalent E of a coil a fraction of that and varies by maker), so the
+// datasheet value is the anchor and a fit that needs half or twice of it
+// says something else is wrong. Effect parameters take theirs from the
+// effect's FitSpec (physics: tube moduli, lengths, densities).
+struct Prior {
+  bool known = false;
+  double nominal = 0, low = 0, high = 0;  // SI, low <= nominal <= high
+};
+
 struct FitParam {
   std::string name;
   std::string unit;   // edge unit, for reports
   double toSI = 1;    // SI = edge * toSI
   double lo = 0, hi = 0;  // bounds, SI
   bool logScale = false;  // optimised in log(value): positive with wide bounds
+  Prior prior;
 };
+
+// Where `value` lies relative to `f`'s plausible band: 0 at the nominal, +-1
+// at the band's edges (in log for log-scale parameters), beyond 1 outside.
+double priorDeviation(const FitParam& f, double value);
 
 // The parameter called `name` for model `p`, or nullopt with `why` set
 // (unknown name, effect not switched on, no rest shape with that parameter).

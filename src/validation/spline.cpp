@@ -99,6 +99,7 @@ void SmoothingSpline::fit(const std::vector<double>& t, const std::vector<Vec3>&
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(A);
     c = ldlt.solve(Bty);
     const double edf = ldlt.solve(BtB).trace();
+    edf_ = edf, points_ = n;
     double rss = 0;
     for (int i = 0; i < n; ++i) {
       const double x = (t[i] - t0_) / h_;

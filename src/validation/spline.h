@@ -34,6 +34,12 @@ class SmoothingSpline {
   double residualRms() const { return residualRms_; }    // m, per coordinate normal to the curve
   double lambda() const { return lambda_; }
   double sigmaUsed() const { return sigma_; }
+  // Effective degrees of freedom of the smoother per coordinate (trace of
+  // its hat matrix) and the number of points it was fitted to: the curve's
+  // own error from the noise has variance sigma^2 edf / n per coordinate on
+  // average over the points (adequacy.h).
+  double effectiveDof() const { return edf_; }
+  int points() const { return points_; }
 
   // Arc length where the curve passes closest to `p` (coarse table, refined),
   // searching only arc lengths up to maxArc.
@@ -52,7 +58,8 @@ class SmoothingSpline {
   int intervals_ = 4;
   std::vector<Vec3> coef_;     // (intervals + 3)
   std::vector<double> tTable_, arc_;  // dense table t -> arc length
-  double residualRms_ = 0, lambda_ = 0, sigma_ = 0;
+  double residualRms_ = 0, lambda_ = 0, sigma_ = 0, edf_ = 0;
+  int points_ = 0;
 };
 
 // Noise SD per coordinate estimated from how far each inner point lies off

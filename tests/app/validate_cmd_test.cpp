@@ -60,6 +60,31 @@ TEST(DiagnoseCommand, ControlFileHasNoSignificantEffect) {
   EXPECT_TRUE(j["fingerprint"].contains("summary"));
 }
 
+// Several files of one coil: the same coil in water and in air (the
+// independent reference rod's files). One E cannot fit both; buoyancy at
+// each file's declared medium makes one E fit them, and the report says so.
+TEST(DiagnoseCommand, TwoFilesOfOneCoilAreFittedJointly) {
+  const fs::path dir = scratch("diagnose_joint");
+  const std::string ref = kSource + "/tests/data/reference/";
+  const Exec r = coilsim({"diagnose", ref + "buoyancy-water.json", ref + "buoyancy-air.json", "--candidates",
+                          "buoyancy", "--out", (dir / "out").string(), "--no-plots", "--quiet"},
+                         dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = readJson(dir / "out" / "diagnosis.json");
+  ASSERT_EQ(j["files"].size(), 2u);
+  for (const auto& f : j["files"]) {
+    EXPECT_TRUE(f["baseline"].contains("prior_check"));
+    EXPECT_TRUE(f["adequacy"].contains("verdict"));
+    EXPECT_TRUE(f["prediction"]["done"].get<bool>());
+  }
+  const auto& joint = j["joint"];
+  EXPECT_TRUE(joint["spread"][0]["must_differ"].get<bool>()) << joint["verdict"];
+  ASSERT_FALSE(joint["effects"].empty());
+  EXPECT_EQ(joint["effects"][0]["effect"], "buoyancy");
+  EXPECT_TRUE(joint["effects"][0]["removes_spread"].get<bool>());
+  EXPECT_CONTAINS(r.out, "joint: young_modulus must differ");
+}
+
 TEST(ValidateCommand, BadFileNamesTheFieldAndExits2) {
   const fs::path dir = scratch("validate_bad");
   std::ofstream(dir / "bad.json") << R"({"format": "coil-measurement/1", "name": "x", "coil": {"length_mm": "long"}})";

@@ -1,4 +1,7 @@
 // The workbench on data with one hidden effect, made by coilsim's own model
+// (the effects the independent reference files of reference_files_test.cpp
+// do not cover: buoyancy told from E by a swing; the stacked-loop bench's
+// geometry)
 // at a finer discretisation (1 mm beams) than the workbench fits with
 // (2 mm), a nominal E 25 % off the truth, uneven sampling (0.5-1.5 mm gaps)
 // and 0.05 mm noise. Reference: the generator's truth. The coil is short
@@ -13,6 +16,7 @@
 // recovered within its stated uncertainty (kSigmas standard deviations).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 
@@ -52,16 +56,6 @@ Measurement skeleton(double pitch = 5e-3) {
     m.stages.push_back(s);
   }
   return m;
-}
-
-// A fast push captured while the coil still swings: inertia matters.
-void addDynamicStage(Measurement& m, double length, double pushTime, double captureTime) {
-  Stage st;
-  st.name = "push";
-  st.deployed = length;
-  st.pushHistory = {{0.0, 0.0, 0.0}, {pushTime, length, 0.0}};
-  st.captureTime = captureTime;
-  m.stages.push_back(st);
 }
 
 // A fast twist of the pusher at a fixed deployed length, captured while the
@@ -192,18 +186,45 @@ TEST(HiddenEffect, ControlHasNoSignificantEffect) {
   EXPECT_NEAR(d.baseline.fitted[0].value, kTrueE, std::max(kSigmas * d.baseline.fitted[0].sigma, 0.025 * kTrueE));
 }
 
-TEST(HiddenEffect, GravityTilt) {
-  checkHidden(skeleton(), {"gravity_tilt",
-                           [](EffectUse& e) {
-                             e.set("tilt_a_deg", 15 * M_PI / 180);
-                             e.set("tilt_b_deg", -10 * M_PI / 180);
-                           },
-                           {{"gravity_tilt.tilt_a_deg", 15 * M_PI / 180}, {"gravity_tilt.tilt_b_deg", -10 * M_PI / 180}}});
-}
-
-TEST(HiddenEffect, CatheterCompliance) {
-  checkHidden(skeleton(), {"catheter_compliance", [](EffectUse& e) { e.set("bending_stiffness_n_mm2", 0.5e-6); },
-                           {{"catheter_compliance.bending_stiffness_n_mm2", 0.5e-6}}});
+// Two effects at once, both above the noise, inside their plausible bands
+// and not mimicking each other: a 4/-3 deg bench tilt (static stages) and
+// a viscous medium (1 Pa s) seen in a fast push. Forward selection must name
+// both (the first by what it explains alone, the second on top of it),
+// nothing else, and bring every stage to the control's error. (A tilt with
+// a compliant catheter is not such a pair: the tube's bending and twist
+// absorb a few degrees of tilt, see docs/validation.md.)
+TEST(HiddenEffect, TwoEffectsAreBothSelected) {
+  Measurement sk = skeleton();
+  sk.mediumViscosity = 1.0;
+  Stage push;
+  push.name = "push";
+  push.deployed = 0.04;
+  push.pushHistory = {{0.0, 0.0, 0.0}, {0.2, 0.04, 0.0}};
+  push.captureTime = 0.2;
+  sk.stages.push_back(push);
+  ModelParams truth = truthOf(sk);
+  truth.effects.push_back(EffectRegistry::global().use("gravity_tilt"));
+  truth.effects.back().set("tilt_a_deg", 4 * M_PI / 180);
+  truth.effects.back().set("tilt_b_deg", -3 * M_PI / 180);
+  truth.effects.push_back(EffectRegistry::global().use("drag"));
+  truth.effects.back().set("viscosity_pa_s", 1.0);
+  const Measurement m = generate(sk, truth);
+  StageSimulator sim(m, coarse());
+  Comparison cmp(m);
+  DiagnoseOptions o = fast();
+  o.predict = false;
+  o.candidates = {candidateFor("gravity_tilt", m), candidateFor("drag", m), candidateFor("buoyancy", m)};
+  const Diagnosis d = diagnose(sim, cmp, ModelParams::nominal(m), o);
+  ASSERT_TRUE(d.ok) << d.message;
+  print("two effects", d);
+  for (const auto& s : d.selected) std::printf("  selected %s %.3f\n", s.effect.c_str(), s.explainedFraction);
+  ASSERT_EQ(d.selected.size(), 2u) << d.verdict;
+  std::vector<std::string> names = {d.selected[0].effect, d.selected[1].effect};
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"drag", "gravity_tilt"})) << d.verdict;
+  const std::vector<double> control = controlErrors(sk);
+  for (size_t k = 0; k < control.size(); ++k)
+    EXPECT_LE(d.finalStages[k].metrics.stageError, 1.5 * control[k]) << "stage " << k;
 }
 
 // In static stages buoyancy cannot be found: under gravity alone it scales
@@ -302,49 +323,6 @@ TEST(HiddenEffect, SelfContactStacksTheLoops) {
   }
   // The loops do rest on one another (closer than their rest pitch).
   EXPECT_GT(pairsBelowPitch, 0);
-}
-
-// Self-contact hidden in the stacked-loop bench, touching at 1.6 wire
-// diameters (0.32 mm, more than the 0.3 mm pitch: the loops rest on one
-// another and hold each other apart; a wound coil's outer diameter is that
-// much larger than the diameter of the solid wire with its stiffness).
-// Static stages at 25, 50 and 75 mm. Its magnitude is the contact
-// distance, which sets the stack's height: recovered within its
-// uncertainty. (At 1.3 the 2 mm fit trades the contact distance for E:
-// 1.22 +- 0.02 and E 7.2 GPa for 5.6; fitted with 1 mm beams, as the data
-// were made, 1.28 +- 0.01 and 5.8 GPa. At 2.0 the base fit makes the coil
-// rigid, E 315 GPa, and the screening sees no contact to switch on.)
-TEST(HiddenEffect, SelfContact) {
-  SKIP_IF_OPEN(coilsim::test::kStaticSelfContactDiverges);
-  checkHidden(stackedLoops(), {"self_contact", [](EffectUse& e) { e.set("contact_radius_scale", 1.6); },
-                               {{"self_contact.contact_radius_scale", 1.6}}});
-}
-
-// The same loops pushed out at 50 mm/s land on each other under gravity
-// (captured 0.5 s after each push; a static stage at 20 mm, before any
-// touch, holds E). Such stages are chaotic: see kRefitStallsWithContacts.
-Measurement selfContactDynamicBench() {
-  Measurement sk = stackedLoops();
-  sk.stages.resize(1);
-  sk.stages[0].deployed = 0.02;
-  sk.stages[0].name = "20 mm";
-  addDynamicStage(sk, 0.05, 1.0, 1.5);
-  sk.stages.back().name = "50 mm";
-  addDynamicStage(sk, 0.075, 1.5, 2.0);
-  sk.stages.back().name = "75 mm";
-  return sk;
-}
-
-TEST(HiddenEffect, SelfContactInADynamicBench) {
-  SKIP_IF_OPEN(coilsim::test::kRefitStallsWithContacts);
-  checkHidden(selfContactDynamicBench(), {"self_contact", [](EffectUse&) {}, {}});
-}
-
-TEST(HiddenEffect, Drag) {
-  Measurement sk = skeleton();
-  sk.mediumViscosity = 1.0;
-  addDynamicStage(sk, 0.04, 0.2, 0.2);
-  checkHidden(sk, {"drag", [](EffectUse& e) { e.set("viscosity_pa_s", 1.0); }, {{"drag.viscosity_pa_s", 1.0}}});
 }
 
 }  // namespace
