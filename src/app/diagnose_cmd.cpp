@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "app/exit_codes.h"
+#include "app/progress.h"
 #include "app/validate_cmd.h"
 #include "io/json_reader.h"
 #include "io/json_writer.h"
@@ -74,7 +75,12 @@ int runDiagnose(const std::vector<std::string>& argsIn) {
   StageSimulator sim(m, simOptionsOf(a));
   const Comparison cmp(m);
   say("diagnose: " + a.file + ": " + std::to_string(m.stages.size()) + " stage(s), " + std::to_string(sim.beams()) + " beams");
-  o.progress = [&](const std::string& s) { say("diagnose: " + s); };
+  Progress progress("diagnose " + a.file, 0, "phases");
+  int phases = 0;
+  o.progress = [&](const std::string& s) {
+    progress.update(++phases, s);
+    if (!a.quiet) progress.line("diagnose: " + s);
+  };
   const Diagnosis d = diagnose(sim, cmp, ModelParams::nominal(m), o);
   if (!d.ok) {
     std::fprintf(stderr, "coilsim diagnose: %s\n", d.message.c_str());

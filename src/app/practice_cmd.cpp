@@ -5,9 +5,12 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "app/format.h"
 #include "app/exit_codes.h"
+#include "app/progress.h"
+#include "app/stop_signal.h"
 #include "io/json_reader.h"
 #include "io/json_writer.h"
 #include "io/timeline.h"
@@ -153,9 +156,16 @@ int runPractice(const std::vector<std::string>& args) {
     const std::function<void(const planning::PracticeSession&)> picture;
 #endif
     planning::ScoreSheet score;
+    // Progress on a terminal; Ctrl-C ends the session after the current step, scored as it stands.
+    std::optional<Progress> progress;
+    auto keepGoing = [&](const planning::PracticeSession& s) {
+      progress->update(s.state().time);
+      return !stopRequested();
+    };
     if (!replay.empty()) {
       const planning::SessionRecording s = planning::loadSession(replay);
-      score = planning::playSession(pc, s.coil, s.timeline, s.views, s.end, nullptr, {}, picture);
+      progress.emplace("practice " + casePath, s.end, "s simulated");
+      score = planning::playSession(pc, s.coil, s.timeline, s.views, s.end, nullptr, {}, picture, keepGoing);
     } else {
       if (coil.empty()) coil = pc.coils.front().name;
       const std::vector<TimedCommand> timeline = io::loadTimeline(input);
@@ -163,13 +173,19 @@ int runPractice(const std::vector<std::string>& args) {
       if (duration == 0) duration = (timeline.empty() ? 0.0 : timeline.back().time) + 1.0;
       if (view != "3d") views.insert(views.begin(), {0.0, view});
       nlohmann::ordered_json recording;
-      score = planning::playSession(pc, coil, timeline, views, duration, &recording, {}, picture);
+      progress.emplace("practice " + casePath, duration, "s simulated");
+      score = planning::playSession(pc, coil, timeline, views, duration, &recording, {}, picture, keepGoing);
       if (!record.empty()) io::writeFileAtomic(record, io::formatJson(recording));
     }
+    if (progress) progress->finish();
     const std::string text = io::formatJson(planning::scoreJson(score));
     io::writeFileAtomic(out, text);
     std::fputs(text.c_str(), stdout);
     if (!score.ok) std::fprintf(stderr, "coilsim practice: %s\n", score.error.c_str());
+    if (stopRequested()) {
+      std::fprintf(stderr, "coilsim practice: %s: the score sheet is of the session so far\n", stopReason());
+      return stopExitCode();
+    }
     return score.ok ? kExitOk : kExitFailure;
   } catch (const io::InputError& e) {
     std::fprintf(stderr, "coilsim practice: %s\n", e.what());
