@@ -52,6 +52,22 @@ TEST(Progress, SilentOffATerminalAndWithQuiet) {
   EXPECT_CONTAINS(tty.out, "helix-settling.json: dynamic");
 }
 
+TEST(Progress, PlanSaysWhichCoilsEachRunDeploys) {
+  const fs::path dir = scratch("progress_plan");
+  const Exec r = onTerminal({"plan", kSource + "/scenes/cases/sphere-7mm-wide-neck.json", "--coils",
+                             "finishing-2x10,finishing-2x10+finishing-2x10", "--no-screenshots", "--out",
+                             (dir / "plan").string()},
+                            dir);
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_CONTAINS(r.out, "run 1 of 2: deploying coil finishing-2x10 (nominal)");
+  EXPECT_CONTAINS(r.out, "run 2 of 2: deploying sequence of 2 coils finishing-2x10 + finishing-2x10 (nominal)");
+  const Exec file = coilsim({"plan", kSource + "/scenes/cases/sphere-7mm-wide-neck.json", "--coils", "finishing-2x10",
+                             "--no-screenshots", "--out", (dir / "plan2").string()},
+                            dir);
+  ASSERT_EQ(file.code, 0) << file.err;
+  EXPECT_EQ(file.err.find("deploying"), std::string::npos) << file.err;
+}
+
 TEST(Progress, DurationsReadAsAClockDoes) {
   using coilsim::app::Progress;
   EXPECT_EQ(Progress::duration(12.4), "12 s");
