@@ -44,10 +44,7 @@ std::string optionLine(const CommandSpec& c, const OptionSpec& o) {
   head.append(o.name);
   if (!o.value.empty()) head.append(" ").append(o.value);
   std::string help(o.help);
-  if ((o.kind == ValueKind::Number || o.kind == ValueKind::Integer) && (o.min != -kNoBound || o.max != kNoBound)) {
-    const std::string e = expectedValue(o);  // "S, a number > 0"
-    help += " [" + e.substr(e.find(", ") + 2) + "]";
-  }
+  if (const std::string b = boundsOf(o); !b.empty() && o.kind != ValueKind::Size) help += " [" + b + "]";
   if (!haveUi() && needsUi(c, o)) help += " (not in this build: no ui layer)";
   if (head.size() < 24)
     head.resize(24, ' ');

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 
@@ -90,15 +91,22 @@ bool parseInteger(std::string_view s, long& out) {
   return !s.empty() && ec == std::errc() && end == s.data() + s.size();
 }
 
+std::string boundsOf(const OptionSpec& o) {
+  if (o.min == -kNoBound && o.max == kNoBound) return "";
+  if (o.max == kNoBound) return (o.openMin ? "> " : ">= ") + bound(o.min);
+  return "in " + std::string(o.openMin ? "(" : "[") + bound(o.min) + ", " + bound(o.max) + "]";
+}
+
 std::string expectedValue(const OptionSpec& o) {
-  const std::string range =
-      o.max == kNoBound ? (o.openMin ? " > " : " >= ") + bound(o.min)
-                        : " in " + std::string(o.openMin ? "(" : "[") + bound(o.min) + ", " + bound(o.max) + "]";
+  // "a timeline file" from the placeholder TIMELINE: the words a user reads in the usage.
+  std::string what(o.value);
+  for (char& ch : what) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+  const std::string bounds = boundsOf(o);
   switch (o.kind) {
     case ValueKind::Number:
-      return std::string(o.value) + ", a number" + (o.min == -kNoBound && o.max == kNoBound ? "" : range);
+      return "a number" + (bounds.empty() ? "" : " " + bounds);
     case ValueKind::Integer:
-      return std::string(o.value) + ", a whole number" + (o.min == -kNoBound && o.max == kNoBound ? "" : range);
+      return "a whole number" + (bounds.empty() ? "" : " " + bounds);
     case ValueKind::Choice: {
       const auto c = choicesOf(o);
       std::string s;
@@ -108,20 +116,20 @@ std::string expectedValue(const OptionSpec& o) {
     case ValueKind::Size:
       return "WIDTHxHEIGHT in pixels, each in [" + bound(o.min) + ", " + bound(o.max) + "]";
     case ValueKind::JsonFile:
-      return std::string(o.value) + ", a JSON file";
+      return what == "file" ? "a JSON file" : "a " + what + " file (JSON)";
     case ValueKind::MeshFile:
-      return std::string(o.value) + ", a mesh file (STL, OBJ, PLY, OFF)";
+      return "a mesh file (STL, OBJ, PLY, OFF)";
     case ValueKind::OutFile:
-      return std::string(o.value) + ", a file name";
+      return what == "file" ? "a file name" : "a " + what + " file name";
     case ValueKind::Directory:
-      return std::string(o.value) + ", a directory";
+      return "a directory";
     case ValueKind::List:
-      return std::string(o.value) + ", a comma-separated list";
+      return "a comma-separated list (" + std::string(o.value) + ")";
     case ValueKind::CoilList:
     case ValueKind::Coil:
-      return std::string(o.value) + ", catalogue coil names (coilsim completion coils lists them)";
+      return "catalogue coil names (" + std::string(o.value) + "; coilsim completion coils lists them)";
     default:
-      return std::string(o.value);
+      return "a value (" + std::string(o.value) + ")";
   }
 }
 

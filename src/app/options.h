@@ -48,8 +48,11 @@ bool parseNumber(std::string_view s, double& out);
 // A whole number, all of `s`; false otherwise.
 bool parseInteger(std::string_view s, long& out);
 
-// What a value of this option must be: "a number > 0", "a whole number in [1, 256]".
+// What a value of this option must be: "a number > 0", "a whole number in
+// [1, 256]", "a timeline file (JSON)".
 std::string expectedValue(const OptionSpec& option);
+// Its bounds: "> 0", "in [1, 256]", "" when it has none.
+std::string boundsOf(const OptionSpec& option);
 
 // Levenshtein distance (insertions, deletions, substitutions).
 size_t editDistance(std::string_view a, std::string_view b);

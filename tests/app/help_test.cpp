@@ -52,7 +52,7 @@ TEST(Help, AnOptionIsNeverTakenAsAValueByTheBinary) {
   EXPECT_FALSE(fs::exists(fs::current_path() / "--headless"));
   const Exec p = coilsim({"plan", "x.json", "--jobs", "2x"}, dir);
   EXPECT_EQ(p.code, 2);
-  EXPECT_CONTAINS(p.err, "--jobs needs N, a whole number in [1, 256], got \"2x\"");
+  EXPECT_CONTAINS(p.err, "--jobs needs a whole number in [1, 256], got \"2x\"");
 }
 
 TEST(Help, UnknownCommandsAndOptionsSuggestTheNearest) {

@@ -21,7 +21,7 @@ TEST(MeshCommand, WarnsWhenTheScaledSurfaceIsNoAneurysmsSize) {
   EXPECT_CONTAINS(tiny.err, "smaller than any aneurysm");
   const Exec bad = coilsim({"mesh", stl, "--scale-to-mm", "10mm"}, dir);
   EXPECT_EQ(bad.code, 2);
-  EXPECT_CONTAINS(bad.err, "--scale-to-mm needs S, a number > 0, got \"10mm\"");
+  EXPECT_CONTAINS(bad.err, "--scale-to-mm needs a number > 0, got \"10mm\"");
 }
 
 }  // namespace
