@@ -297,9 +297,9 @@ int runValidate(const std::vector<std::string>& args) {
   const std::vector<StageComparison> before = cmp.compare(sim.run(base, false));
   FitOptions fo;
   fo.params = fit;
-  Progress progress("validate " + a.file, fit.empty() ? 0 : fo.maxEvaluations, "fit evaluations (of at most)");
+  Progress progress("validate " + a.file, fit.empty() ? 0 : fo.maxEvaluations, "fit evaluations");
   fo.progress = [&](int k, double rms) {
-    progress.update(k);
+    progress.update(k, "at most; a converged fit ends sooner");
     if (!a.quiet) progress.line("  fit: evaluation " + std::to_string(k) + ", RMS residual " + fmt("%.4f", rms * 1e3) + " mm");
   };
   fo.stop = [] { return stopRequested(); };  // Ctrl-C: the report of the fit so far, marked not finished
