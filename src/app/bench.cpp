@@ -13,6 +13,8 @@
 #include <string>
 
 #include "app/bench_contact.h"
+#include "app/progress.h"
+#include "app/run_scene.h"
 #include "physics/run.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
@@ -161,22 +163,36 @@ int runBench(const std::vector<std::string>& args) {
     }
   }
   Figures fig;
+  // Phases: four solver sizes, four deployments, validation, contact (and rendering).
+  app::Progress progress("bench", app::haveUi() ? 11 : 10, "phases");
+  int phase = 0;
+  auto record = [&](const std::string& k, double v) {
+    fig.set(k, v);
+    progress.update(phase, k);
+  };
   for (int beams : {100, 300, 1000, 3000}) {
-    if (!json) std::fprintf(stderr, "bench: %d beams...\n", beams);
+    if (!json) progress.line("bench: " + std::to_string(beams) + " beams...");
     benchSolver(fig, beams, quick);
+    progress.update(++phase);
   }
   for (int beams : {150, 300})
     for (double speed : {1.0, 10.0}) {
-      if (!json) std::fprintf(stderr, "bench: deploying the 150 mm coil, %d beams, %g mm/s...\n", beams, speed);
+      if (!json)
+        progress.line("bench: deploying the 150 mm coil, " + std::to_string(beams) + " beams, " +
+                      std::to_string(int(speed)) + " mm/s...");
       benchDeployment(fig, beams, speed, quick);
+      progress.update(++phase);
     }
   fig.set("step_cost_ratio_n3000_over_n100_per_beam",
           fig.values["step_us_n3000"] / 3000.0 / (fig.values["step_us_n100"] / 100.0));
-  benchValidationFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
-  benchContactFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
+  benchValidationFigures(record, quick, json);
+  ++phase;
+  benchContactFigures(record, quick, json);
+  ++phase;
 #ifdef COILSIM_HAVE_UI
-  benchRenderFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
+  benchRenderFigures(record, quick, json);
 #endif
+  progress.finish();
   if (json) {
     std::printf("{");
     for (size_t i = 0; i < fig.order.size(); ++i)

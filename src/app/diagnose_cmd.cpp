@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "app/exit_codes.h"
+#include "app/progress.h"
 #include "app/validate_cmd.h"
 #include "io/json_reader.h"
 #include "io/json_writer.h"
@@ -203,7 +204,12 @@ int runDiagnose(const std::vector<std::string>& argsIn) {
     const Comparison& cmp = *cmps.back();
     say("diagnose: " + f.file + ": " + std::to_string(f.m.stages.size()) + " stage(s), " + std::to_string(sim.beams()) + " beams");
     DiagnoseOptions o = opts[i];
-    o.progress = [&](const std::string& s) { say("diagnose: " + s); };
+    Progress progress("diagnose " + f.file, 0, "phases");
+    int phases = 0;
+    o.progress = [&](const std::string& s) {
+      progress.update(++phases, s);
+      if (!a.quiet) progress.line("diagnose: " + s);
+    };
     const Diagnosis d = diagnose(sim, cmp, ModelParams::nominal(f.m), o);
     if (!d.ok) {
       std::fprintf(stderr, "coilsim diagnose: %s: %s\n", f.file.c_str(), d.message.c_str());

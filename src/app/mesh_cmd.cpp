@@ -4,12 +4,40 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "app/exit_codes.h"
 #include "io/json_reader.h"
 #include "io/mesh_file.h"
 
 namespace coilsim::app {
+namespace {
+
+// Aneurysms are about 2 to 60 mm across, a head about 200 mm: a surface far
+// outside that was most likely read in the wrong unit.
+constexpr double kLargestPlausibleMm = 300, kSmallestPlausibleMm = 1;
+
+// Why the surface's size (mm) is implausible, or "".
+std::string sizeWarning(const TriangleMesh& mesh, double scale) {
+  if (mesh.vertices.empty()) return "";
+  Vec3 lo = mesh.vertices.front(), hi = lo;
+  for (const Vec3& v : mesh.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  const double across = (hi - lo).maxCoeff();
+  char buf[320];
+  if (across > kLargestPlausibleMm)
+    std::snprintf(buf, sizeof buf,
+                  "%.4g mm across with --scale-to-mm %g: no aneurysm is that size (nor a head, ~200 mm); "
+                  "is the file in mm already (--scale-to-mm 1)?", across, scale);
+  else if (across < kSmallestPlausibleMm)
+    std::snprintf(buf, sizeof buf,
+                  "%.4g mm across with --scale-to-mm %g: smaller than any aneurysm; a file in metres needs "
+                  "--scale-to-mm 1000", across, scale);
+  else
+    return "";
+  return buf;
+}
+
+}  // namespace
 
 int runMeshCommand(const std::vector<std::string>& args) {
   auto usage = [](const std::string& message) {
@@ -37,6 +65,8 @@ int runMeshCommand(const std::vector<std::string>& args) {
   try {
     const io::MeshInspection in = io::inspectMeshFile(file, scale);
     std::fputs(io::describeInspection(in).c_str(), stdout);
+    if (const std::string w = sizeWarning(in.mesh, scale); !w.empty())
+      std::fprintf(stderr, "coilsim mesh: warning: %s: %s\n", file.c_str(), w.c_str());
     if (!in.repaired.usable) {
       std::fprintf(stderr, "coilsim: %s: cannot be used as a wall: %s\n", file.c_str(), in.repaired.reason.c_str());
       return kExitUsage;

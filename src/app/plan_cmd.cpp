@@ -12,6 +12,8 @@
 
 #include "app/exit_codes.h"
 #include "app/format.h"
+#include "app/plan_runner.h"
+#include "app/stop_signal.h"
 #include "io/json_writer.h"
 #include "io/units.h"
 #include "planning/case_file.h"
@@ -217,7 +219,10 @@ int plan(const PlanArgs& a) {
   if (ec) return usage("cannot create " + a.out + ": " + ec.message());
   std::fprintf(stderr, "coilsim plan: %zu run(s) on %d thread(s), sac %.1f mm^3\n", candidates.size(), a.jobs,
                units::mToMm(units::mToMm(units::mToMm(setup.sacVolume))));
-  const std::vector<CandidateResult> results = planning::runCandidates(setup, candidates, a.jobs);
+  const std::vector<CandidateResult> results = runCandidatesShowingProgress(setup, candidates, a.jobs, a.input);
+  if (stopRequested())  // what ran is written below; the exit code says it is not all
+    std::fprintf(stderr, "coilsim plan: %s: %zu of %zu run(s) finished, written\n", stopReason(), results.size(),
+                 candidates.size());
   nlohmann::ordered_json pj = planning::planJson(setup, results);
   bool allOk = true;
   for (size_t i = 0; i < results.size(); ++i) {
@@ -238,6 +243,7 @@ int plan(const PlanArgs& a) {
   const std::string md = planning::planMarkdown(pj);
   io::writeFileAtomic((std::filesystem::path(a.out) / "plan.md").string(), md);
   std::fputs(md.c_str(), stdout);
+  if (stopRequested()) return stopExitCode();
   return allOk ? kExitOk : kExitFailure;
 }
 
@@ -254,7 +260,7 @@ int plans(const PlanArgs& a) {
     const std::string sub = fileSafe(std::filesystem::path(input).stem().string());
     one.out = (std::filesystem::path(a.out) / sub).string();
     const int code = plan(one);
-    if (code == kExitUsage) return code;
+    if (code == kExitUsage || stopRequested()) return code;
     worst = std::max(worst, code);
     nlohmann::ordered_json pj = nlohmann::ordered_json::parse(io::readJsonFile((std::filesystem::path(one.out) / "plan.json").string()).dump());
     for (auto& c : pj["coils"])

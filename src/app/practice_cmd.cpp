@@ -7,9 +7,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "app/format.h"
 #include "app/exit_codes.h"
+#include "app/progress.h"
+#include "app/stop_signal.h"
 #include "io/json_reader.h"
 #include "io/json_writer.h"
 #include "io/timeline.h"
@@ -157,6 +160,12 @@ int runPractice(const std::vector<std::string>& args) {
     const std::function<void(const planning::PracticeSession&)> picture;
 #endif
     planning::ScoreSheet score;
+    // Progress on a terminal; Ctrl-C ends the session after the current step, scored as it stands.
+    std::optional<Progress> progress;
+    auto keepGoing = [&](const planning::PracticeSession& s) {
+      progress->update(s.state().time);
+      return !stopRequested();
+    };
     if (!replay.empty()) {
       const planning::SessionRecording s = planning::loadSession(replay);
       // A session recorded on another case replays other physics: refused, naming the session's field.
@@ -169,7 +178,8 @@ int runPractice(const std::vector<std::string>& args) {
       bool known = false;
       for (const io::CoilSpec& c : pc.coils) known = known || c.name == s.coil;
       if (!known) throw io::InputError(replay + ": /coil: the case " + casePath + " has no coil \"" + s.coil + "\"");
-      score = planning::playSession(pc, s.coil, s.timeline, s.views, s.end, nullptr, {}, picture);
+      progress.emplace("practice " + casePath, s.end, "s simulated");
+      score = planning::playSession(pc, s.coil, s.timeline, s.views, s.end, nullptr, {}, picture, keepGoing);
     } else {
       if (coil.empty()) coil = pc.coils.front().name;
       const std::vector<TimedCommand> timeline = io::loadTimeline(input);
@@ -177,14 +187,20 @@ int runPractice(const std::vector<std::string>& args) {
       if (duration == 0) duration = std::min(3600.0, (timeline.empty() ? 0.0 : timeline.back().time) + 1.0);
       if (view != "3d") views.insert(views.begin(), {0.0, view});
       nlohmann::ordered_json recording;
-      score = planning::playSession(pc, coil, timeline, views, duration, &recording, {}, picture);
+      progress.emplace("practice " + casePath, duration, "s simulated");
+      score = planning::playSession(pc, coil, timeline, views, duration, &recording, {}, picture, keepGoing);
       if (!record.empty()) io::writeFileAtomic(record, io::formatJson(recording));
     }
+    if (progress) progress->finish();
     const std::string text = io::formatJson(planning::scoreJson(score));
     io::writeFileAtomic(out, text);
     std::fputs(text.c_str(), stdout);
     for (const std::string& m : score.deviceMessages) std::fprintf(stderr, "coilsim practice: device: %s\n", m.c_str());
     if (!score.ok) std::fprintf(stderr, "coilsim practice: %s\n", score.error.c_str());
+    if (stopRequested()) {
+      std::fprintf(stderr, "coilsim practice: %s: the score sheet is of the session so far\n", stopReason());
+      return stopExitCode();
+    }
     return score.ok ? kExitOk : kExitFailure;
   } catch (const io::InputError& e) {
     std::fprintf(stderr, "coilsim practice: %s\n", e.what());

@@ -1,5 +1,8 @@
 #include "app/run_scene.h"
+#include "app/commands.h"
 #include "app/format.h"
+#include "app/progress.h"
+#include "app/stop_signal.h"
 
 #include <chrono>
 #include <cstdio>
@@ -49,27 +52,9 @@ std::string tips(const Model& model, const State& state) {
   return s;
 }
 
-// Percent done on stderr, at most once a second, only once a run has taken a second.
-class Progress {
- public:
-  explicit Progress(long total) : total_(total), start_(Clock::now()), last_(start_) {}
-  void update(long done, double timeS) {
-    if ((done & 63) != 0) return;  // look at the clock only every 64 steps
-    const auto now = Clock::now();
-    if (now - last_ < std::chrono::seconds(1)) return;
-    last_ = now;
-    std::fprintf(stderr, "coilsim: %3.0f%% (t = %.4g s, step %ld of %ld)\n", 100.0 * double(done) / double(total_), timeS,
-                 done, total_);
-  }
-  double seconds() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
-
- private:
-  long total_;
-  Clock::time_point start_, last_;
-};
-
 struct Outcome {
   bool ok = true;
+  bool stopped = false;  // by SIGINT or SIGTERM, after a whole step
   std::string summary;  // one line, without the scene name
 };
 
@@ -83,21 +68,31 @@ std::string stepSummary(const Model& model, const State& state, long done, long 
          " us); energy " + fmt("%.4g", e.total()) + " J (kinetic " + fmt("%.3g", e.kinetic) + " J)";
 }
 
-Outcome simulateDynamic(const Model& model, State& state, long steps, io::RunRecord& record) {
-  Progress progress(steps);
+// The record of a run stopped by a signal: still a valid result of the state reached.
+Outcome stopped(io::RunRecord& record, const State& state, std::string line) {
+  record.status = "stopped";
+  record.error = std::string(stopReason()) + " at t = " + fmt("%.6g", state.time) + " s, after a whole step";
+  return {false, true, std::move(line)};
+}
+
+Outcome simulateDynamic(const Model& model, State& state, long steps, io::RunRecord& record, const std::string& label) {
+  Progress progress("run " + label, double(steps) * model.timeStep, "s simulated");
   StepReport report;
   long done = 0;
-  for (; done < steps; ++done) {
+  while (done < steps && !stopRequested()) {
     report = advance(model, state);
     if (!report.ok()) break;
-    progress.update(done + 1, state.time);
+    ++done;
+    progress.update(state.time);
   }
+  progress.finish();
   const std::string line = stepSummary(model, state, done, steps, progress.seconds()) + tips(model, state);
-  if (report.ok()) return {true, line};
+  if (report.ok() && done < steps) return stopped(record, state, line);
+  if (report.ok()) return {true, false, line};
   record.status = "step_refused";
   record.error = "step " + std::to_string(done + 1) + " refused at t = " + fmt("%.6g", state.time) +
                  " s: " + report.message;
-  return {false, line};
+  return {false, false, line};
 }
 
 // runTimeline reports a refused command as "t = <its time> s: refused: why";
@@ -118,7 +113,7 @@ std::string nameCommand(const std::string& entry, const std::vector<TimedCommand
 // steps. Refused commands are printed and become warnings, not failures; a
 // refused step fails the run.
 Outcome simulateDeployment(const Model& model, State& state, const std::vector<TimedCommand>& timeline, const std::string& timelineFile, long steps,
-                           io::RunRecord& record) {
+                           io::RunRecord& record, const std::string& label) {
   const double duration = double(steps) * model.timeStep;
   // runTimeline starts a command at the first step that begins at or after its time.
   const double lastStart = double(steps - 1) * model.timeStep;
@@ -130,9 +125,13 @@ Outcome simulateDeployment(const Model& model, State& state, const std::vector<T
       std::fprintf(stderr, "coilsim: warning: %s\n", w.c_str());
       record.warnings.push_back(w);
     }
-  const auto start = Clock::now();
-  TimelineRun run = runTimeline(model, state, timeline, duration);
-  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  Progress progress("run " + label, duration, "s simulated");
+  TimelineRun run = runTimeline(model, state, timeline, duration, [&] {
+    progress.update(state.time, fmt("coil %.4g mm out", units::mToMm(state.device.deployed)));
+    return !stopRequested();
+  });
+  progress.finish();
+  const double seconds = progress.seconds();
   // The last entry of a failed run says which step was refused; the others
   // are refused commands and limits reached on the way.
   std::string stepError;
@@ -159,10 +158,11 @@ Outcome simulateDeployment(const Model& model, State& state, const std::vector<T
                      (ds.tipOffset != 0 ? ", catheter retracted " + fmt("%.6g", units::mToMm(ds.tipOffset)) + " mm"
                                         : std::string()) +
                      tipLine + "; state " + io::stateHash(state);
-  if (run.ok) return {true, line};
+  if (run.stopped) return stopped(record, state, line);
+  if (run.ok) return {true, false, line};
   record.status = "step_refused";
   record.error = stepError.empty() ? "a step was refused" : stepError;
-  return {false, line};
+  return {false, false, line};
 }
 
 Outcome simulateStatic(const Model& model, State& state, const io::SceneSpec& spec, io::RunRecord& record) {
@@ -175,10 +175,10 @@ Outcome simulateStatic(const Model& model, State& state, const io::SceneSpec& sp
                            std::to_string(rep.increments) + " load increments and " + std::to_string(rep.iterations) +
                            " Newton iterations in " + fmt("%.3g", seconds) + " s; elastic energy " +
                            fmt("%.4g", e.elastic) + " J" + tips(model, state);
-  if (rep.converged) return {true, line};
+  if (rep.converged) return {true, false, line};
   record.status = "not_converged";
   record.error = "static solve did not converge: " + rep.message;
-  return {false, line};
+  return {false, false, line};
 }
 
 // Writes --out; false (after saying why) if it cannot.
@@ -275,16 +275,21 @@ int run(const RunOptions& o) {
   if (spec.solve == io::SolveMode::Static) {
     r = simulateStatic(model, state, spec, record);
   } else {
-    const long steps = o.steps ? *o.steps : io::stepCount(o.durationS ? *o.durationS : spec.durationS, model.timeStep);
+    const double seconds = o.durationS ? *o.durationS : spec.durationS;
+    const long steps = o.steps ? *o.steps : io::stepCount(seconds, model.timeStep);
+    if (!o.steps && seconds / model.timeStep > double(kMaxRunSteps))
+      return usageError(o.scene + ": " + fmt("%g", seconds) + " s in steps of " + fmt("%g", model.timeStep) +
+                        " s is more than " + std::to_string(kMaxRunSteps) + " steps: refused before it starts");
     if (model.device)
-      r = simulateDeployment(model, state, timeline, o.input, steps, record);
+      r = simulateDeployment(model, state, timeline, o.input, steps, record, o.scene);
     else
-      r = simulateDynamic(model, state, steps, record);
+      r = simulateDynamic(model, state, steps, record, o.scene);
   }
   std::printf("%s: %s\n", o.scene.c_str(), r.summary.c_str());
   std::fflush(stdout);
   if (!r.ok) std::fprintf(stderr, "coilsim: %s: %s\n", o.scene.c_str(), record.error.c_str());
   if (!writeOut(o, model, state, record)) return kExitUsage;
+  if (r.stopped || stopRequested()) return stopExitCode();  // a static solve is not interrupted: it ends first
   if (!o.screenshot.empty()) {
 #ifdef COILSIM_HAVE_UI
     std::string error;

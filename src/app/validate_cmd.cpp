@@ -11,6 +11,8 @@
 #include <sstream>
 
 #include "app/exit_codes.h"
+#include "app/progress.h"
+#include "app/stop_signal.h"
 #include "app/validate_plots.h"
 #include "app/validate_window.h"
 #include "io/json_reader.h"
@@ -500,7 +502,12 @@ int runValidate(const std::vector<std::string>& args) {
   const std::vector<StageComparison> before = cmp.compare(sim.run(base, false));
   FitOptions fo;
   fo.params = fit;
-  fo.progress = [&](int k, double rms) { say("  fit: evaluation " + std::to_string(k) + ", RMS residual " + fmt("%.4f", rms * 1e3) + " mm"); };
+  Progress progress("validate " + a.file, fit.empty() ? 0 : fo.maxEvaluations, "fit evaluations");
+  fo.progress = [&](int k, double rms) {
+    progress.update(k, "at most; a converged fit ends sooner");
+    if (!a.quiet) progress.line("  fit: evaluation " + std::to_string(k) + ", RMS residual " + fmt("%.4f", rms * 1e3) + " mm");
+  };
+  fo.stop = [] { return stopRequested(); };  // Ctrl-C: the report of the fit so far, marked not finished
   if (!fit.empty()) say("validate: fitting " + std::to_string(fit.size()) + " parameter(s)...");
   else if (!a.effects.empty()) say("validate: the model with the effects on...");
   FitResult r = identify(sim, cmp, start, fo);
@@ -582,8 +589,8 @@ int runValidate(const std::vector<std::string>& args) {
       return kExitFailure;
     }
   if (!r.ok) {
-    std::fprintf(stderr, "coilsim validate: %s\n", r.message.c_str());
-    return kExitFailure;
+    std::fprintf(stderr, "coilsim validate: %s\n", stopRequested() ? stopReason() : r.message.c_str());
+    return stopRequested() ? stopExitCode() : kExitFailure;
   }
   return kExitOk;
 }

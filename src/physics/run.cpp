@@ -126,7 +126,8 @@ StepReport advance(const Model& model, State& state) {
   return step(model, state);
 }
 
-TimelineRun runTimeline(const Model& model, State& state, const std::vector<TimedCommand>& timeline, double duration) {
+TimelineRun runTimeline(const Model& model, State& state, const std::vector<TimedCommand>& timeline, double duration,
+                        const std::function<bool()>& keepGoing) {
   TimelineRun run;
   const double dt = model.timeStep;
   const long steps = long(std::llround(duration / dt));
@@ -145,6 +146,10 @@ TimelineRun runTimeline(const Model& model, State& state, const std::vector<Time
     if (!rep.ok()) {
       run.log.push_back("t = " + std::to_string(t) + " s: step refused: " + rep.message);
       run.ok = false;
+      break;
+    }
+    if (keepGoing && !keepGoing()) {
+      run.stopped = true;
       break;
     }
   }

@@ -6,6 +6,7 @@
 // physics step (physics/integrator.h). Commands are inputs: command() checks
 // one against what the real device allows and sets it on the State, to act
 // from the next advance().
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -35,11 +36,15 @@ void moveDevice(const Model& model, State& state);
 // (step index * dt) is at or after their time, so a replay is bit-for-bit.
 // Stops after `duration` s. Refused commands and refused steps are reported
 // in `log`; `ok` is false if a step was refused (numerical blow-up).
+// `keepGoing`, when given, is asked after each step (a front end's progress
+// and Ctrl-C); false ends the run there with `stopped` set.
 struct TimelineRun {
   std::vector<std::string> log;
   long steps = 0;
   bool ok = true;
+  bool stopped = false;
 };
-TimelineRun runTimeline(const Model& model, State& state, const std::vector<TimedCommand>& timeline, double duration);
+TimelineRun runTimeline(const Model& model, State& state, const std::vector<TimedCommand>& timeline, double duration,
+                        const std::function<bool()>& keepGoing = {});
 
 }  // namespace coilsim

@@ -137,7 +137,16 @@ PracticeCase parseCase(const nlohmann::json& document, const std::string& file) 
   return c;
 }
 
-std::string defaultCatalogue() { return std::string(COILSIM_SOURCE_DIR) + "/assets/coils"; }
+namespace {
+std::string& dataDirectory() {
+  static std::string dir = COILSIM_SOURCE_DIR;
+  return dir;
+}
+}  // namespace
+
+void setDataDirectory(const std::string& dir) { dataDirectory() = dir; }
+
+std::string defaultCatalogue() { return dataDirectory() + "/assets/coils"; }
 
 PracticeCase loadCase(const std::string& path) { return parseCase(io::readJsonFile(path), path); }
 

@@ -43,8 +43,11 @@ Sac readSac(const io::JsonNode& node);
 PracticeCase loadCase(const std::string& path);
 PracticeCase parseCase(const nlohmann::json& document, const std::string& file);
 
-// The project's coil catalogue directory (assets/coils of the source tree).
+// The coil catalogue directory: assets/coils of the data directory set by
+// setDataDirectory (an installed program's share/coilsim), else of the source
+// tree this library was built from.
 std::string defaultCatalogue();
+void setDataDirectory(const std::string& dir);
 
 // The sac of a phantom STL made by `coilsim phantom`: its surface and the
 // neck plane of its sidecar (io::phantomSidecarPath). Throws InputError

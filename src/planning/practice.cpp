@@ -112,7 +112,8 @@ SessionRecording loadSession(const std::string& path) { return parseSession(io::
 ScoreSheet playSession(const PracticeCase& pc, const std::string& coil, const std::vector<TimedCommand>& timeline,
                        const std::vector<std::pair<double, std::string>>& views, double end,
                        ordered_json* recordingOut, const ContactForceSource& contacts,
-                       const std::function<void(const PracticeSession&)>& atEnd) {
+                       const std::function<void(const PracticeSession&)>& atEnd,
+                       const std::function<bool(const PracticeSession&)>& keepGoing) {
   PracticeSession session(pc, coil, contacts);
   const double dt = session.model().timeStep;
   const long steps = std::lround(end / dt);
@@ -129,6 +130,7 @@ ScoreSheet playSession(const PracticeCase& pc, const std::string& coil, const st
       else session.replayCommand(c);
     }
     if (!session.step()) break;
+    if (keepGoing && !keepGoing(session)) break;
   }
   if (recordingOut) *recordingOut = session.recording();
   if (atEnd) atEnd(session);

@@ -82,11 +82,14 @@ SessionRecording parseSession(const nlohmann::json& document, const std::string&
 
 // Plays `timeline` and `views` (inputs at their times) for `end` seconds on a
 // fresh session and returns its score sheet. Used for replay and for
-// scripted practice; identical inputs give identical sheets.
+// scripted practice; identical inputs give identical sheets. `keepGoing`,
+// when given, is asked after each step (a front end's progress and Ctrl-C):
+// false ends the session there, scored as it stands.
 ScoreSheet playSession(const PracticeCase& practiceCase, const std::string& coil,
                        const std::vector<TimedCommand>& timeline,
                        const std::vector<std::pair<double, std::string>>& views, double end,
                        nlohmann::ordered_json* recordingOut = nullptr, const ContactForceSource& contacts = {},
-                       const std::function<void(const PracticeSession&)>& atEnd = {});
+                       const std::function<void(const PracticeSession&)>& atEnd = {},
+                       const std::function<bool(const PracticeSession&)>& keepGoing = {});
 
 }  // namespace coilsim::planning
