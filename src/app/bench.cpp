@@ -13,6 +13,7 @@
 #include <string>
 
 #include "app/bench_contact.h"
+#include "app/bench_dense.h"
 #include "physics/run.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
@@ -148,19 +149,34 @@ void benchDeployment(Figures& fig, int beams, double speedMmS, bool quick) {
   fig.set(key, run.ok ? simulated / wall : 0.0);
 }
 
+void printJson(Figures& fig) {
+  std::printf("{");
+  for (size_t i = 0; i < fig.order.size(); ++i)
+    std::printf("%s\"%s\": %.4g", i ? ", " : "", fig.order[i].c_str(), fig.values[fig.order[i]]);
+  std::printf("}\n");
+}
+
 }  // namespace
 
 int runBench(const std::vector<std::string>& args) {
-  bool json = false, quick = false;
+  bool json = false, quick = false, contactOnly = false;
   for (const std::string& a : args) {
     if (a == "--json") json = true;
     else if (a == "--quick") quick = true;
+    else if (a == "--contact") contactOnly = true;
     else {
-      std::fprintf(stderr, "coilsim bench: unknown option '%s' (known: --json, --quick)\n", a.c_str());
+      std::fprintf(stderr, "coilsim bench: unknown option '%s' (known: --json, --quick, --contact)\n", a.c_str());
       return 2;
     }
   }
   Figures fig;
+  // The contact figures alone: what a profile of detection wants to see.
+  if (contactOnly) {
+    benchContactFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
+    benchDenseFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
+    if (json) printJson(fig);
+    return 0;
+  }
   for (int beams : {100, 300, 1000, 3000}) {
     if (!json) std::fprintf(stderr, "bench: %d beams...\n", beams);
     benchSolver(fig, beams, quick);
@@ -174,14 +190,12 @@ int runBench(const std::vector<std::string>& args) {
           fig.values["step_us_n3000"] / 3000.0 / (fig.values["step_us_n100"] / 100.0));
   benchValidationFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
   benchContactFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
+  benchDenseFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
 #ifdef COILSIM_HAVE_UI
   benchRenderFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
 #endif
   if (json) {
-    std::printf("{");
-    for (size_t i = 0; i < fig.order.size(); ++i)
-      std::printf("%s\"%s\": %.4g", i ? ", " : "", fig.order[i].c_str(), fig.values[fig.order[i]]);
-    std::printf("}\n");
+    printJson(fig);
     return 0;
   }
   std::printf("%-10s %12s %14s %16s %14s %10s %10s\n", "beams", "step_us", "block_solve_us", "simplicial_ldlt", "sparse_lu_us",
