@@ -15,6 +15,7 @@
 #include "app/bench_contact.h"
 #include "app/progress.h"
 #include "app/run_scene.h"
+#include "app/bench_dense.h"
 #include "physics/run.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
@@ -150,19 +151,34 @@ void benchDeployment(Figures& fig, int beams, double speedMmS, bool quick) {
   fig.set(key, run.ok ? simulated / wall : 0.0);
 }
 
+void printJson(Figures& fig) {
+  std::printf("{");
+  for (size_t i = 0; i < fig.order.size(); ++i)
+    std::printf("%s\"%s\": %.4g", i ? ", " : "", fig.order[i].c_str(), fig.values[fig.order[i]]);
+  std::printf("}\n");
+}
+
 }  // namespace
 
 int runBench(const std::vector<std::string>& args) {
-  bool json = false, quick = false;
+  bool json = false, quick = false, contactOnly = false;
   for (const std::string& a : args) {
     if (a == "--json") json = true;
     else if (a == "--quick") quick = true;
+    else if (a == "--contact") contactOnly = true;
     else {
-      std::fprintf(stderr, "coilsim bench: unknown option '%s' (known: --json, --quick)\n", a.c_str());
+      std::fprintf(stderr, "coilsim bench: unknown option '%s' (known: --json, --quick, --contact)\n", a.c_str());
       return 2;
     }
   }
   Figures fig;
+  // The contact figures alone: what a profile of detection wants to see.
+  if (contactOnly) {
+    benchContactFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
+    benchDenseFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
+    if (json) printJson(fig);
+    return 0;
+  }
   // Phases: four solver sizes, four deployments, validation, contact (and rendering).
   app::Progress progress("bench", app::haveUi() ? 11 : 10, "phases");
   int phase = 0;
@@ -188,16 +204,14 @@ int runBench(const std::vector<std::string>& args) {
   benchValidationFigures(record, quick, json);
   ++phase;
   benchContactFigures(record, quick, json);
+  benchDenseFigures(record, quick, json);
   ++phase;
 #ifdef COILSIM_HAVE_UI
   benchRenderFigures(record, quick, json);
 #endif
   progress.finish();
   if (json) {
-    std::printf("{");
-    for (size_t i = 0; i < fig.order.size(); ++i)
-      std::printf("%s\"%s\": %.4g", i ? ", " : "", fig.order[i].c_str(), fig.values[fig.order[i]]);
-    std::printf("}\n");
+    printJson(fig);
     return 0;
   }
   std::printf("%-10s %12s %14s %16s %14s %10s %10s\n", "beams", "step_us", "block_solve_us", "simplicial_ldlt", "sparse_lu_us",

@@ -63,6 +63,7 @@ constexpr std::array kRun{
 constexpr std::array kBench{
     flag("--json", "print the figures as one JSON document"),
     flag("--quick", "fewer repeats: rougher figures in a fraction of the time"),
+    flag("--contact", "the contact figures alone (detection against its fresh-query baseline, dense packing)"),
     kQuiet,
 };
 
@@ -200,16 +201,17 @@ constexpr std::array kCommands{
                 "         [--input TIMELINE] [--views T:VIEW,...] [--duration S] [--screenshot PNG]",
                 "CASE", K::JsonFile, 1, 1, kPractice, "exit codes: 0 ok, 1 a step was refused, 2 bad input"},
     CommandSpec{"validate", "the model against a measured coil (docs/validation.md)",
-                "validate FILE [--effects a,b] [--fit young_modulus,...] --out DIR [options]\n"
+                "validate FILE... [--effects a,b] [--fit young_modulus,...] --out DIR [options]   (several: jointly)\n"
                 "validate FILE --window [--effects a,b] [--fit ...]   (the panel)\n"
                 "validate FILE --screenshot PNG [--toggle a,b] [--auto-fit]   (the panel off-screen)",
-                "FILE", K::JsonFile, 1, 1, kValidate,
+                "FILE...", K::JsonFile, 1, -1, kValidate,
                 "Writes DIR/report.json, DIR/report.md and the plots. Ctrl-C (SIGINT) or SIGTERM stops a\n"
                 "fit after the current evaluation and writes the report of the values reached.\n"
                 "exit codes: 0 ok, 1 a stage failed or the fit did not finish, 2 bad input, 130 / 143 stopped"},
     CommandSpec{
-        "diagnose", "which physical effect is missing (docs/validation.md)", "diagnose FILE --out DIR [options]",
-        "FILE", K::JsonFile, 1, 1, kDiagnose,
+        "diagnose", "which physical effect is missing (docs/validation.md)",
+        "diagnose FILE... --out DIR [options]   (several files of one coil: fitted jointly)", "FILE...", K::JsonFile, 1,
+        -1, kDiagnose,
         "Writes DIR/diagnosis.json and DIR/diagnosis.md.\nexit codes: 0 ok, 1 the diagnosis failed, 2 bad input"},
     CommandSpec{"case", "a planning case from a patient's surface, or edit one (docs/planning.md)",
                 "case new SURFACE --out CASE.json [--sac-point X,Y,Z] [--catalogue DIR]\n"

@@ -234,6 +234,40 @@ CavityPush pushIntoCavity(Cavity& c, double length) {
   return out;
 }
 
+// Wall detection from last step's findings (the nearest triangle as a hint,
+// a first query within the reach alone, the clearance that lets a free
+// segment skip its query) must find exactly the contacts of a fresh query of
+// every segment with the wide box, the reference (ContactScratch::
+// coherentWall false). The same push of a coil into the cavity, two States
+// of one Model: every step's wall contacts, and the poses, equal bit for bit.
+TEST(WallContactTest, DetectionFromLastStepFindsExactlyTheFreshQuerysContacts) {
+  const double length = 0.015;
+  auto c = cavityDeployment(length, 30, true, true);
+  State fresh = c->state;
+  fresh.contactScratch.coherentWall = false;
+  ASSERT_EQ(command(c->model, c->state, {DeviceCommand::Kind::Push, 0.01, length}), "");
+  ASSERT_EQ(command(c->model, fresh, {DeviceCommand::Kind::Push, 0.01, length}), "");
+  long contacts = 0;
+  for (int i = 0; i < int(length / 0.01 / c->model.timeStep) + 200; ++i) {
+    ASSERT_TRUE(advance(c->model, c->state).ok()) << "step " << i;
+    ASSERT_TRUE(advance(c->model, fresh).ok()) << "step " << i;
+    for (size_t k = 0; k < fresh.rods.size(); ++k) {
+      const std::vector<ContactPoint>&a = c->state.rods[k].contact.wall, &b = fresh.rods[k].contact.wall;
+      ASSERT_EQ(a.size(), b.size()) << "step " << i << ", rod " << k;
+      for (size_t j = 0; j < a.size(); ++j) {
+        ASSERT_EQ(a[j].segment, b[j].segment) << "step " << i;
+        ASSERT_EQ(a[j].node, b[j].node) << "step " << i;
+        ASSERT_EQ(a[j].gap, b[j].gap) << "step " << i;
+        ASSERT_EQ(a[j].normal, b[j].normal) << "step " << i;
+        ASSERT_EQ(a[j].anchor, b[j].anchor) << "step " << i;
+      }
+      contacts += long(a.size());
+      ASSERT_EQ(c->state.rods[k].x, fresh.rods[k].x) << "step " << i;
+    }
+  }
+  EXPECT_GT(contacts, 1000) << "the coil hardly touched the wall: the test would prove nothing";
+}
+
 // The root causes this test found (physics/contact/response.h): sliding
 // friction explicit along the slip (a loop snapping at 1.6 m/s), contacts
 // outside the step's linearisation (tunnelling at 0.6 m/s), a node sliding

@@ -65,6 +65,9 @@ struct RodContacts {
   std::vector<double> wallClear;  // (nnode - 1)
   std::vector<Vec3> wallClearAt;  // (2 (nnode - 1))
   int wallClearNodes = -1;
+  // Per segment and obstacle, the triangle nearest to it at its last query
+  // (-1: none): where the next query starts. Only a guess, never trusted.
+  std::vector<int> wallHint;  // ((nnode - 1) x nobstacle)
 };
 
 }  // namespace coilsim

@@ -53,26 +53,40 @@ void forEachNearPair(const Model& model, const State& state, bool sameRod, doubl
     }
   }
   std::sort(grid.begin(), grid.end(), [](const GridSegment& a, const GridSegment& b) { return a.cell < b.cell; });
-  for (const GridSegment& gi : grid) {
-    const RodState& ri = state.rods[gi.rod];
-    const Vec3 m = 0.5 * (ri.x[gi.segment] + ri.x[gi.segment + 1]) / cell;
+  // The 27 neighbour cells are looked up once per occupied cell, not once
+  // per segment: in a packed sac a cell holds tens of segments (the binary
+  // searches were a fifth of a multi-coil plan's time, docs/contact.md).
+  // Each segment still visits its neighbours in the same order.
+  using Range = std::pair<std::vector<GridSegment>::const_iterator, std::vector<GridSegment>::const_iterator>;
+  Range near[27];
+  for (auto run = grid.cbegin(); run != grid.cend();) {
+    auto runEnd = run;
+    while (runEnd != grid.cend() && runEnd->cell == run->cell) ++runEnd;
+    const RodState& r0 = state.rods[run->rod];
+    const Vec3 m = 0.5 * (r0.x[run->segment] + r0.x[run->segment + 1]) / cell;
     const long cx = std::lround(std::floor(m.x())), cy = std::lround(std::floor(m.y())), cz = std::lround(std::floor(m.z()));
+    int n = 0;
     for (long dx = -1; dx <= 1; ++dx)
       for (long dy = -1; dy <= 1; ++dy)
         for (long dz = -1; dz <= 1; ++dz) {
           const std::uint64_t key = cellKey(cx + dx, cy + dy, cz + dz);
-          auto it = std::lower_bound(grid.begin(), grid.end(), key,
-                                     [](const GridSegment& g, std::uint64_t k) { return g.cell < k; });
-          for (; it != grid.end() && it->cell == key; ++it) {
-            const GridSegment& gj = *it;
-            // Each pair once: i before j.
-            if (gj.rod < gi.rod || (gj.rod == gi.rod && gj.segment <= gi.segment)) continue;
-            if (sameRod != (gj.rod == gi.rod)) continue;
-            if (sameRod && gj.segment - gi.segment <= 1) continue;
-            if (model.rods[gi.rod].role == RodRole::Catheter && model.rods[gj.rod].role == RodRole::Catheter) continue;
-            visit(gi.rod, gi.segment, gj.rod, gj.segment);
-          }
+          near[n++] = std::equal_range(grid.cbegin(), grid.cend(), GridSegment{key, 0, 0},
+                                       [](const GridSegment& a, const GridSegment& b) { return a.cell < b.cell; });
         }
+    for (auto gIt = run; gIt != runEnd; ++gIt) {
+      const GridSegment& gi = *gIt;
+      for (const Range& range : near)
+        for (auto it = range.first; it != range.second; ++it) {
+          const GridSegment& gj = *it;
+          // Each pair once: i before j.
+          if (gj.rod < gi.rod || (gj.rod == gi.rod && gj.segment <= gi.segment)) continue;
+          if (sameRod != (gj.rod == gi.rod)) continue;
+          if (sameRod && gj.segment - gi.segment <= 1) continue;
+          if (model.rods[gi.rod].role == RodRole::Catheter && model.rods[gj.rod].role == RodRole::Catheter) continue;
+          visit(gi.rod, gi.segment, gj.rod, gj.segment);
+        }
+    }
+    run = runEnd;
   }
 }
 

@@ -40,7 +40,14 @@ double boxDistance2(const Vec3& lo1, const Vec3& hi1, const Vec3& lo2, const Vec
 // its box is farther than the best so far) and the squared gaps between
 // the boxes (boxGap2, a lower bound of the distance from any point of the
 // segment).
-Nearest nearestFeature(const ObstacleTree& tree, const Vec3& a, const Vec3& b, double reach, ContactScratch& scratch) {
+//
+// `slackScale` sets the tie slack (1e-9 of it), so that a narrower query of
+// the same segment keeps exactly the ties of a wider one. `hint` (a triangle
+// that was the segment's nearest before, or -1) only speeds the search: when
+// it is among the candidates its distance bounds the pruning from the
+// start, and the result is still the first nearest in the candidates' order.
+Nearest nearestFeature(const ObstacleTree& tree, const Vec3& a, const Vec3& b, double reach, ContactScratch& scratch,
+                       double slackScale, int hint = -1) {
   std::vector<int>& candidates = scratch.candidates;
   std::vector<SegmentTriangle>& hits = scratch.hits;
   std::vector<double>& boxGap2 = scratch.boxGap2;
@@ -50,20 +57,31 @@ Nearest nearestFeature(const ObstacleTree& tree, const Vec3& a, const Vec3& b, d
   tree.overlapping(lo - grow, hi + grow, scratch.stack, candidates);
   hits.resize(candidates.size());
   boxGap2.resize(candidates.size());
-  Nearest best;
   const TriangleMesh& m = tree.mesh();
+  // An upper bound of the nearest candidate's distance, from the hint.
+  double known = INFINITY;
+  size_t hintAt = candidates.size();
+  if (hint >= 0) {
+    hintAt = size_t(std::find(candidates.begin(), candidates.end(), hint) - candidates.begin());
+    if (hintAt < candidates.size()) {
+      const Eigen::Vector3i& f = m.triangles[hint];
+      hits[hintAt] = closestSegmentTriangle(a, b, m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]);
+      known = hits[hintAt].distance;
+    }
+  }
+  Nearest best;
   for (size_t k = 0; k < candidates.size(); ++k) {
     const Eigen::Vector3i& f = m.triangles[candidates[k]];
     const Vec3 &p = m.vertices[f[0]], &q = m.vertices[f[1]], &r = m.vertices[f[2]];
     // (With a little slack: a triangle sharing the nearest feature must
     // not be lost to round-off, pseudoNormal needs it.)
-    const double bound = best.hit.distance + 1e-9 * reach;
+    const double bound = (best.triangle >= 0 ? std::min(best.hit.distance, known) : known) + 1e-9 * slackScale;
     boxGap2[k] = boxDistance2(lo, hi, p.cwiseMin(q).cwiseMin(r), p.cwiseMax(q).cwiseMax(r));
-    if (best.triangle >= 0 && boxGap2[k] > bound * bound) {
+    if ((best.triangle >= 0 || known < INFINITY) && boxGap2[k] > bound * bound) {
       hits[k].distance = std::numeric_limits<double>::quiet_NaN();
       continue;
     }
-    hits[k] = closestSegmentTriangle(a, b, p, q, r);
+    if (k != hintAt) hits[k] = closestSegmentTriangle(a, b, p, q, r);
     if (best.triangle < 0 || hits[k].distance < best.hit.distance) best = {hits[k], candidates[k], k};
   }
   return best;
@@ -174,6 +192,7 @@ void detectWallContacts(const Model& model, State& state, double h, double margi
   const std::vector<int>& candidates = scratch.candidates;
   const std::vector<SegmentTriangle>& hits = scratch.hits;
   const std::vector<SegmentTriangle>& nodeHits = scratch.nodeHits;
+  const bool coherent = scratch.coherentWall;
   for (size_t k = 0; k < state.rods.size(); ++k) {
     RodState& r = state.rods[k];
     ContactLaw law = wallLaw;
@@ -187,6 +206,9 @@ void detectWallContacts(const Model& model, State& state, double h, double margi
         rc.wallClearAt.assign(2 * rc.wallClear.size(), Vec3::Zero());
         rc.wallClearNodes = r.activeNodes;
       }
+      // A hint is only a guess (a node inserted at the catheter tip
+      // renumbers the segments behind it), so it is kept across renumbering.
+      rc.wallHint.resize(rc.wallClear.size() * model.obstacles.size(), -1);
       for (int e = 0; e + 1 < r.activeNodes; ++e) {
         const Vec3 &a = r.x[e], &b = r.x[e + 1];
         const double radius = (1 + kWallSkin) * 0.5 * (r.nodes[e].radius + r.nodes[e + 1].radius);
@@ -197,7 +219,7 @@ void detectWallContacts(const Model& model, State& state, double h, double margi
         // Temporal coherence: no triangle lay within wallClear of the
         // segment where it was; if it has moved less than that minus its
         // reach, none is within reach now (exact, so nothing is missed).
-        if (rc.wallClear[e] > 0) {
+        if (coherent && rc.wallClear[e] > 0) {
           const double moved = std::max((a - rc.wallClearAt[2 * e]).norm(), (b - rc.wallClearAt[2 * e + 1]).norm());
           if (moved + reach < rc.wallClear[e]) continue;
         }
@@ -206,8 +228,18 @@ void detectWallContacts(const Model& model, State& state, double h, double margi
         for (size_t o = 0; o < model.obstacles.size(); ++o) {
           if (!model.obstacles[o].contact || o >= model.obstacleTrees.size()) continue;
           const ObstacleTree& tree = *model.obstacleTrees[o];
-          // Queried beyond the reach, so the clearance found lasts a while.
-          Nearest n = nearestFeature(tree, a, b, reach + kLookAhead, scratch);
+          // First within the reach alone, from last step's nearest
+          // triangle: a segment on the wall finds it among a third of the
+          // candidates. What follows only uses triangles within the reach,
+          // so it comes out as from the wider query (docs/contact.md).
+          int& hint = rc.wallHint[e * model.obstacles.size() + o];
+          Nearest n;
+          if (coherent) n = nearestFeature(tree, a, b, reach, scratch, reach + kLookAhead, hint);
+          if (n.triangle < 0 || n.hit.distance > reach) {
+            // Queried beyond the reach, so the clearance found lasts a while.
+            n = nearestFeature(tree, a, b, reach + kLookAhead, scratch, reach + kLookAhead);
+          }
+          hint = n.triangle;
           clear = std::min(clear, n.triangle < 0 ? reach + kLookAhead : n.hit.distance);
           if (n.triangle < 0 || n.hit.distance > reach) {
             // Nothing near: either free, or pushed wholly through the wall
@@ -215,7 +247,7 @@ void detectWallContacts(const Model& model, State& state, double h, double margi
             ContactPoint probe;
             probe.segment = e, probe.other = int(o);
             if (!findPrevious(rc.previous, probe, r)) continue;
-            n = nearestFeature(tree, a, b, 4 * radius + margin, scratch);
+            n = nearestFeature(tree, a, b, 4 * radius + margin, scratch, 4 * radius + margin);
             if (n.triangle < 0) continue;
           }
           const size_t listed = rc.wall.size();
@@ -234,6 +266,9 @@ void detectWallContacts(const Model& model, State& state, double h, double margi
           for (size_t ci = 0; ci < candidates.size(); ++ci) {
             const int t = candidates[ci];
             if (t == n.triangle || extra >= 3) continue;
+            // (A triangle whose box is farther than the reach is too: its
+            // hit would be skipped below, so it is not measured.)
+            if (std::isnan(hits[ci].distance) && scratch.boxGap2[ci] > reach * reach) continue;
             const Vec3& nt = tree.normal(t);
             if (nt.dot(nA) > 0.99999 || nt.dot(nA) < 0.5) continue;
             const auto& f = m.triangles[t];
@@ -361,7 +396,7 @@ std::string checkWallContacts(const Model& model, const State& state, double mar
       for (size_t o = 0; o < model.obstacles.size(); ++o) {
         if (!model.obstacles[o].contact || o >= model.obstacleTrees.size()) continue;
         const ObstacleTree& tree = *model.obstacleTrees[o];
-        const Nearest n = nearestFeature(tree, a, b, 2 * radius, scratch);
+        const Nearest n = nearestFeature(tree, a, b, 2 * radius, scratch, 2 * radius);
         if (n.triangle < 0) continue;
         // The planes' penetration is linear along the segment: at the
         // deepest point s they allow (1 - s) known_a + s known_b.

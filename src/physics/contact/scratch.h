@@ -19,6 +19,11 @@ struct GridSegment {
 };
 
 struct ContactScratch {
+  // Wall detection from last step's findings (the clear distances, the
+  // nearest triangles) where they give the same contacts faster; false: every
+  // segment is queried afresh (the reference the tests and the bench compare
+  // against).
+  bool coherentWall = true;
   // Wall queries (detect_wall.cpp): the tree traversal, the candidate
   // triangles, the closest points of the segment and of one of its nodes to
   // each candidate, and the squared gap between their boxes.
