@@ -157,7 +157,7 @@ int runEdit(const std::vector<std::string>& args) {
       if (!ok) {
         std::fprintf(stderr, "coilsim case edit: %s: %s %s refused: %s\n", file.c_str(), option.c_str(), value.c_str(),
                      option == "--tip" ? "the tip must lie inside the surface"
-                                       : "the neck plane must leave the sac centre on the dome side and cut off a sac");
+                                       : "the neck plane must leave the sac centre on the dome side and cut the surface at an opening");
         return kExitUsage;
       }
     }

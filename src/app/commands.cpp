@@ -50,7 +50,7 @@ constexpr std::array kRun{
     value("--input", K::JsonFile, "TIMELINE",
           "drive the scene's coil deployment by timed commands (coilsim-timeline/1: push, pull, twist, stop, "
           "detach, retract; see timelines/*.json)"),
-    number("--duration", "S", "simulated seconds, instead of the scene's duration_s (dynamic scenes)", 0, kNoBound,
+    number("--duration", "S", "simulated seconds, instead of the scene's duration_s (dynamic scenes)", 0, 3600,
            true),
     integer("--steps", "N", "number of time steps instead (dynamic scenes)", 1, double(kMaxRunSteps)),
     value("--screenshot", K::OutFile, "PNG",
@@ -125,9 +125,9 @@ constexpr OptionSpec kWorkbenchOut =
     value("--out", K::Directory, "DIR", "write the report, its tables and plots into DIR");
 constexpr OptionSpec kFit =
     value("--fit", K::List, "a,b", "fit these parameters (young_modulus, an effect's, or an effect's name)");
-constexpr OptionSpec kSpacing = number("--spacing", "MM", "beam length in mm (default 2)", 0, 100, true);
+constexpr OptionSpec kSpacing = number("--spacing", "MM", "beam length in mm (default 2)", 0.05, 100);
 constexpr OptionSpec kPushIncrement =
-    number("--push-increment", "MM", "deployed length between static solves in mm (default 2)", 0, 100, true);
+    number("--push-increment", "MM", "deployed length between static solves in mm (default 2)", 0.05, 100);
 constexpr OptionSpec kNoPlots = flag("--no-plots", "no PNG plots");
 constexpr OptionSpec kQuietWorkbench = flag("--quiet", "no progress or phase lines on stderr");
 

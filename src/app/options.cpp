@@ -32,9 +32,13 @@ bool inBounds(const OptionSpec& o, double v) { return (o.openMin ? v > o.min : v
 
 // A word that reads as an option rather than a value: "--headless", "-h";
 // not a negative number.
+// A negative number or a point with a negative first coordinate ("-6,0,5") is a value: no option name
+// starts with a digit.
 bool looksLikeOption(std::string_view s) {
   double d = 0;
-  return s.size() > 1 && s[0] == '-' && !parseNumber(s, d);
+  if (s.size() < 2 || s[0] != '-') return false;
+  if (std::isdigit(static_cast<unsigned char>(s[1])) || s[1] == '.') return false;
+  return !parseNumber(s, d);
 }
 
 std::vector<std::string_view> optionNames(const CommandSpec& c) {

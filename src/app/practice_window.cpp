@@ -32,6 +32,7 @@ class WindowScorer : public ui::RunObserver {
     scorer_->commandAccepted(t, planning::commandJson({t, given}), applied);
   }
   void viewChanged(double t, const std::string& view) override { scorer_->viewChanged(t, view); }
+  void noted(const std::string& message) override { scorer_->deviceMessage(message); }
   void beforeStep(const State& s) override { scorer_->beforeStep(s); }
   void afterStep(const Model& m, const State& s, bool ok, const std::string& why) override {
     scorer_->afterStep(m, s, ok, why);
@@ -67,6 +68,7 @@ class WindowScorer : public ui::RunObserver {
       }
     }
     std::fputs(text.c_str(), stdout);
+    for (const std::string& m : score.deviceMessages) std::fprintf(stderr, "coilsim practice: device: %s\n", m.c_str());
     if (!score.ok) {
       std::fprintf(stderr, "coilsim practice: %s\n", score.error.c_str());
       outputs_->exitCode = kExitFailure;

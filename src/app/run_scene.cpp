@@ -278,7 +278,7 @@ int run(const RunOptions& o) {
     const double seconds = o.durationS ? *o.durationS : spec.durationS;
     const long steps = o.steps ? *o.steps : io::stepCount(seconds, model.timeStep);
     if (!o.steps && seconds / model.timeStep > double(kMaxRunSteps))
-      return usageError(o.scene + ": " + fmt("%g", seconds) + " s in steps of " + fmt("%g", model.timeStep) +
+      return usageError(o.scene + ": " + (o.durationS ? "--duration " : "duration_s ") + fmt("%g", seconds) + " s in steps of " + fmt("%g", model.timeStep) +
                         " s is more than " + std::to_string(kMaxRunSteps) + " steps: refused before it starts");
     if (model.device)
       r = simulateDeployment(model, state, timeline, o.input, steps, record, o.scene);

@@ -71,7 +71,8 @@ CaseEditor::CaseEditor(const std::string& file) : file_(file), doc_(readDocument
 bool CaseEditor::tryNeck(const geometry::Plane& plane) {
   if (!(plane.side(sacCentre_) > 0) || !plane.normal.allFinite()) return false;
   const geometry::SacMorphology m = geometry::measureSac(surface(), plane, sacCentre_, vesselDiameter_);
-  if (!(m.volume > 0)) return false;
+  // A plane below the ostium cuts the parent vessel, not a neck: the sac piece then has no opening.
+  if (!(m.volume > 0) || !(m.neckWidth > 0)) return false;
   neck_ = plane, morphology_ = m, edited_ = true;
   return true;
 }

@@ -70,17 +70,9 @@ bool PracticeSession::step() {
   return rep.ok();
 }
 
-void PracticeSession::note(const std::string& message) {
-  char t[40];
-  std::snprintf(t, sizeof t, "t = %.3f s: ", time());
-  deviceMessages_.push_back(t + message);
-}
+void PracticeSession::note(const std::string& message) { scorer_->deviceMessage(message); }
 
-ScoreSheet PracticeSession::finish() {
-  ScoreSheet s = scorer_->finish(model_, state_);
-  s.deviceMessages = deviceMessages_;
-  return s;
-}
+ScoreSheet PracticeSession::finish() { return scorer_->finish(model_, state_); }
 
 ordered_json PracticeSession::recording() const { return scorer_->recording(time()); }
 

@@ -66,7 +66,6 @@ class PracticeSession {
   State state_;
   long steps_ = 0;
   std::optional<SessionScorer> scorer_;
-  std::vector<std::string> deviceMessages_;  // refusals and limits reached, for the score sheet
   void note(const std::string& message);  // built once the deployment is known
 };
 

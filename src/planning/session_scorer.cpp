@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "io/timeline.h"
 #include "io/units.h"
@@ -109,6 +110,12 @@ void SessionScorer::viewChanged(double t, const std::string& view) {
   if (view == view_) return;
   view_ = view;
   views_.emplace_back(t, view);
+}
+
+void SessionScorer::deviceMessage(const std::string& message) {
+  char t[40];
+  std::snprintf(t, sizeof t, "t = %.3f s: ", time());
+  score_.deviceMessages.push_back(t + message);
 }
 
 void SessionScorer::beforeStep(const State& state) {

@@ -70,6 +70,9 @@ class SessionScorer {
   // `recorded` is what the file gets (commandJson of the command as given).
   void commandAccepted(double t, const nlohmann::ordered_json& recorded, const DeviceCommand& applied);
   void viewChanged(double t, const std::string& view);
+  // A refused command or a device limit reached, at the session time so far
+  // (the score sheet's device_messages).
+  void deviceMessage(const std::string& message);
 
   // Around every advance (the device moves, then the physics steps). A
   // refused step ends the scoring (nothing later counts).

@@ -73,6 +73,7 @@ void Session::note(const std::string& message) {
   std::snprintf(t, sizeof t, "t = %.3f s: ", state_.time);
   deviceMessages_.push_back(t + message);
   while (deviceMessages_.size() > 8) deviceMessages_.pop_front();
+  if (observer_) observer_->noted(message);
 }
 
 std::string Session::command(const DeviceCommand& c) {

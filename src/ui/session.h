@@ -49,6 +49,8 @@ class RunObserver {
   virtual void accepted(double /*t*/, const DeviceCommand& /*given*/, const DeviceCommand& /*applied*/) {}
   // The user looks through `view` from session time `t` on (also once when attached).
   virtual void viewChanged(double /*t*/, const std::string& /*view*/) {}
+  // A refused command or a device limit reached (the device messages' line).
+  virtual void noted(const std::string& /*message*/) {}
   // Around every advance (the device moves, then the physics steps).
   virtual void beforeStep(const State&) {}
   virtual void afterStep(const Model&, const State&, bool /*ok*/, const std::string& /*why*/) {}

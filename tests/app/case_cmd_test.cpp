@@ -160,12 +160,21 @@ TEST(CaseEdit, NeckShiftIsSavedAndTheRestKept) {
   for (const char* key : {"sac", "morphology"}) before.erase(key), after.erase(key);
   EXPECT_EQ(before, after);
   EXPECT_NO_THROW(::coilsim::planning::loadCase((dir / "edited.json").string()));
-  const Exec refused = apptest::coilsim({"case", "edit", (dir / "case.json").string(), "--neck-shift", "40", "--out",
-                                         (dir / "never.json").string()},
-                                        dir);
-  EXPECT_EQ(refused.code, 2);
-  EXPECT_CONTAINS(refused.err, "refused");
-  EXPECT_FALSE(fs::exists(dir / "never.json"));
+  // Past the dome (no sac left) and below the ostium (the plane cuts the parent vessel, no opening): refused,
+  // and nothing written; beyond the option's range, a usage error.
+  for (const char* shift : {"12", "-8"}) {
+    const Exec refused = apptest::coilsim({"case", "edit", (dir / "case.json").string(), "--neck-shift", shift,
+                                           "--out", (dir / "never.json").string()},
+                                          dir);
+    EXPECT_EQ(refused.code, 2) << shift;
+    EXPECT_CONTAINS(refused.err, "refused");
+    EXPECT_FALSE(fs::exists(dir / "never.json"));
+  }
+  const Exec range = apptest::coilsim({"case", "edit", (dir / "case.json").string(), "--neck-shift", "40", "--out",
+                                       (dir / "never.json").string()},
+                                      dir);
+  EXPECT_EQ(range.code, 2);
+  EXPECT_CONTAINS(range.err, "--neck-shift needs a number in [-20, 20]");
 }
 
 }  // namespace

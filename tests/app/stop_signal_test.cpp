@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <csignal>
+#include <fstream>
 #include <string>
 
 #include "app/run_binary.h"
@@ -58,9 +59,13 @@ TEST(StopSignal, SigtermStopsADeploymentWithAValidResult) {
 
 TEST(StopSignal, ARunBeyondTheStepBoundIsRefusedUpFront) {
   const fs::path dir = scratch("stop_bound");
-  const Exec r = coilsim({"run", scene("helix-settling.json"), "--headless", "--duration", "1e12"}, dir);
+  // The hour --duration allows, in steps of 10 us: 3.6e8 steps.
+  nlohmann::json s = readJson(scene("helix-settling.json"));
+  s["time_step_s"] = 1e-5;
+  std::ofstream(dir / "fine.json") << s.dump();
+  const Exec r = coilsim({"run", (dir / "fine.json").string(), "--headless", "--duration", "3600"}, dir);
   EXPECT_EQ(r.code, 2);
-  EXPECT_CONTAINS(r.err, "more than 100000000 steps");
+  EXPECT_CONTAINS(r.err, "--duration 3600 s in steps of 1e-05 s is more than 100000000 steps");
   EXPECT_EQ(r.out, "");  // nothing ran
 }
 
