@@ -9,8 +9,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <set>
 #include <vector>
 
+#include "physics/contact/detect.h"
 #include "physics/contact/geometry.h"
 #include "physics/integrator.h"
 #include "support/rod_models.h"
@@ -140,6 +143,55 @@ TEST(SelfContactTest, EndOfStepCheckCatchesAPairCrossedWithinTheStep) {
 TEST(SelfContactTest, SwitchedOffTheCrossingPassesThrough) {
   const Press p = pressCrossing(false);
   EXPECT_GT(p.flips, 0);
+}
+
+// The pair search (detect_rods.cpp): slow segments through a grid, fast
+// ones (sweeping more than a quarter of their size in the step) paired with
+// every segment directly. Reference: every pair of non-adjacent segments by
+// brute force, listed when it is within the margin or its start velocity
+// closes it within the step. A tight helix (many near pairs), most nodes
+// slow and a few at up to 1 m/s, must give exactly that set.
+TEST(SelfContactTest, PairSearchWithFastSegmentsFindsWhatBruteForceFinds) {
+  ModelDef def;
+  RodDef r;
+  r.length = 0.06;
+  r.beams = 120;
+  r.rest = makeHelix(r.length, r.beams, 2e-3, 0.25e-3, true);
+  r.material = test::platinum();
+  r.section = circularSection(0.12e-3, test::kPlatinumPoisson);
+  def.rods.push_back(r);
+  def.timeStep = 1e-3;
+  const Model model = compileModel(def);
+  std::mt19937 rng(3);
+  std::normal_distribution<double> slow(0, 0.005);
+  std::uniform_real_distribution<double> u(0, 1);
+  const double h = 1e-3, margin = 0.05e-3;
+  ContactLaw law;
+  law.stiffness = 5e4;
+  for (int trial = 0; trial < 5; ++trial) {
+    State s = makeState(model);
+    RodState& rod = s.rods[0];
+    int fastNodes = 0;  // (counted for the printout)
+    for (Vec3& v : rod.v) {
+      v = Vec3(slow(rng), slow(rng), slow(rng));
+      if (u(rng) < 0.03) v = Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5).normalized() * (0.2 + 0.8 * u(rng)), ++fastNodes;
+    }
+    rod.v[60 + 7 * trial] = Vec3(0.6, -0.3, 0.2), ++fastNodes;  // at least one in every trial
+    detectRodContacts(model, s, h, true, margin, law, law);
+    std::set<std::pair<int, int>> found, expected;
+    for (const ContactPoint& c : rod.contact.self)
+      if (c.segment < c.otherSegment) found.insert({c.segment, c.otherSegment});
+    for (int i = 0; i + 1 < rod.activeNodes; ++i)
+      for (int j = i + 2; j + 1 < rod.activeNodes; ++j) {
+        const SegmentPair p = closestSegmentSegment(rod.x[i], rod.x[i + 1], rod.x[j], rod.x[j + 1]);
+        const double gap = p.distance - (rod.nodes[i].radius + rod.nodes[j].radius);
+        const Vec3 n = (p.p - p.q) / p.distance;
+        const Vec3 va = (1 - p.s) * rod.v[i] + p.s * rod.v[i + 1], vb = (1 - p.t) * rod.v[j] + p.t * rod.v[j + 1];
+        if (gap <= margin || -gap - h * n.dot(va - vb) > 0) expected.insert({i, j});
+      }
+    EXPECT_GT(expected.size(), 100u) << "trial " << trial;
+    EXPECT_EQ(found, expected) << "trial " << trial << " (" << fastNodes << " fast nodes)";
+  }
 }
 
 }  // namespace

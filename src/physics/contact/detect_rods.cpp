@@ -24,30 +24,82 @@ long cellIndex(double v) { return std::lround(std::floor(std::clamp(v, -1e6, 1e6
 
 bool takesPart(const RodState& r) { return r.active && r.activeNodes >= 2; }
 
+// Half the segment's length plus its larger node radius, and what it sweeps in `sweep` s at its start velocity.
+double segmentSize(const RodState& r, int e) {
+  return 0.5 * (r.x[e + 1] - r.x[e]).norm() + std::max(r.nodes[e].radius, r.nodes[e + 1].radius);
+}
+double segmentSweep(const RodState& r, int e, double sweep) { return sweep * std::max(r.v[e].norm(), r.v[e + 1].norm()); }
+
 // Calls visit(ri, si, rj, sj) once for every pair of segments (ri before rj,
-// or si < sj - 1 in one rod) whose midpoints lie in neighbouring cells of a
-// uniform grid with cells at least as large as the reach of any two capsules
-// (half a segment + radius + what the segment sweeps in `sweep` s at its
-// velocity) plus `margin`: every pair that can come within `margin` is
-// visited. O(n) for a coil, not O(n^2).
+// or si < sj - 1 in one rod) that can come within `margin` of each other
+// in `sweep` s: their midpoints no farther apart than the reach of the two
+// capsules (half a segment + radius + what the segment sweeps at its
+// velocity) plus `margin` (some farther pairs are visited too). Slow
+// segments go into a uniform grid with cells as large as the reach of any
+// two of them, O(n) for a coil, not O(n^2); a segment that sweeps more than
+// a quarter of its own size in the step (a tip jolted at the catheter, a
+// loop snapping) is fast and is paired with every segment directly: one
+// such segment used to set the cells of all, and in a packed sac a cell
+// three times as wide holds 27 times as many segments.
 template <class Visit>
 void forEachNearPair(const Model& model, const State& state, bool sameRod, double margin, double sweep, Visit visit) {
   std::vector<GridSegment>& grid = state.contactScratch.grid;
+  std::vector<GridSegment>& fast = state.contactScratch.fast;
   grid.clear();
-  double reach = 0;
+  fast.clear();
+  double size = 0;
   for (size_t k = 0; k < state.rods.size(); ++k) {
     const RodState& r = state.rods[k];
     if (!takesPart(r)) continue;
-    for (int e = 0; e + 1 < r.activeNodes; ++e)
-      reach = std::max(reach, 0.5 * (r.x[e + 1] - r.x[e]).norm() + std::max(r.nodes[e].radius, r.nodes[e + 1].radius) +
-                                  sweep * std::max(r.v[e].norm(), r.v[e + 1].norm()));
+    for (int e = 0; e + 1 < r.activeNodes; ++e) size = std::max(size, segmentSize(r, e));
   }
-  const double cell = 2 * reach + margin;
-  if (!(cell > 0) || !std::isfinite(cell)) return;  // no rod takes part (or positions are not finite)
+  double reach = size;
   for (size_t k = 0; k < state.rods.size(); ++k) {
     const RodState& r = state.rods[k];
     if (!takesPart(r)) continue;
     for (int e = 0; e + 1 < r.activeNodes; ++e) {
+      const double swept = segmentSweep(r, e, sweep);
+      if (swept > 0.25 * size) fast.push_back({0, int(k), e});  // in (rod, segment) order
+      else reach = std::max(reach, segmentSize(r, e) + swept);
+    }
+  }
+  const double cell = 2 * reach + margin;
+  if (!(cell > 0) || !std::isfinite(cell)) return;  // no rod takes part (or positions are not finite)
+  const auto isFast = [&](int k, int e) {
+    return std::binary_search(fast.begin(), fast.end(), GridSegment{0, k, e}, [](const GridSegment& a, const GridSegment& b) {
+      return a.rod != b.rod ? a.rod < b.rod : a.segment < b.segment;
+    });
+  };
+  // Each pair once, first before second; the same filters as the grid's.
+  const auto pairUp = [&](int ki, int si, int kj, int sj) {
+    if (kj < ki || (kj == ki && sj < si)) std::swap(ki, kj), std::swap(si, sj);
+    if (sameRod != (ki == kj)) return;
+    if (sameRod && sj - si <= 1) return;
+    if (model.rods[ki].role == RodRole::Catheter && model.rods[kj].role == RodRole::Catheter) return;
+    visit(ki, si, kj, sj);
+  };
+  for (const GridSegment& f : fast) {
+    const RodState& rf = state.rods[f.rod];
+    const Vec3 mf = 0.5 * (rf.x[f.segment] + rf.x[f.segment + 1]);
+    const double reachF = segmentSize(rf, f.segment) + segmentSweep(rf, f.segment, sweep);
+    for (size_t k = 0; k < state.rods.size(); ++k) {
+      const RodState& r = state.rods[k];
+      if (!takesPart(r) || (sameRod && int(k) != f.rod) || (!sameRod && int(k) == f.rod)) continue;
+      for (int e = 0; e + 1 < r.activeNodes; ++e) {
+        if (int(k) == f.rod && e == f.segment) continue;
+        // A fast pair is met from its first segment only.
+        if ((int(k) < f.rod || (int(k) == f.rod && e < f.segment)) && isFast(int(k), e)) continue;
+        const double apart = (0.5 * (r.x[e] + r.x[e + 1]) - mf).norm();
+        if (apart > reachF + segmentSize(r, e) + segmentSweep(r, e, sweep) + margin) continue;
+        pairUp(f.rod, f.segment, int(k), e);
+      }
+    }
+  }
+  for (size_t k = 0; k < state.rods.size(); ++k) {
+    const RodState& r = state.rods[k];
+    if (!takesPart(r)) continue;
+    for (int e = 0; e + 1 < r.activeNodes; ++e) {
+      if (!fast.empty() && isFast(int(k), e)) continue;
       const Vec3 m = 0.5 * (r.x[e] + r.x[e + 1]) / cell;
       grid.push_back({cellKey(cellIndex(m.x()), cellIndex(m.y()), cellIndex(m.z())), int(k), e});
     }
@@ -155,8 +207,11 @@ void detectRodContacts(const Model& model, State& state, double h, bool sameRod,
   for (size_t k = 0; k < state.rods.size(); ++k) {
     RodState& r = state.rods[k];
     std::vector<ContactPoint>& list = sameRod ? r.contact.self : r.contact.rod;
+    // A total order, so that the order pairs were found in does not matter
+    // (two other rods can touch one segment at equal segment indices).
     std::sort(list.begin(), list.end(), [](const ContactPoint& x, const ContactPoint& y) {
-      return x.segment != y.segment ? x.segment < y.segment : x.otherSegment < y.otherSegment;
+      if (x.segment != y.segment) return x.segment < y.segment;
+      return x.otherSegment != y.otherSegment ? x.otherSegment < y.otherSegment : x.other < y.other;
     });
     for (ContactPoint& c : list) {
       const bool catheter = model.rods[k].role == RodRole::Catheter || model.rods[c.other].role == RodRole::Catheter;

@@ -32,7 +32,7 @@ struct ContactScratch {
   std::vector<double> boxGap2;
   // Pair queries (detect_rods.cpp): the grid, last step's lists per rod
   // while they are matched, and each segment's largest static move.
-  std::vector<GridSegment> grid;
+  std::vector<GridSegment> grid, fast;  // fast: segments paired directly, not through the grid
   std::vector<std::vector<ContactPoint>> previous;
   std::vector<double> moves;
 };
