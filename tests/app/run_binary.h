@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 
 #include <nlohmann/json.hpp>
+#include <unistd.h>
 
 #define EXPECT_CONTAINS(text, part) \
   EXPECT_NE(std::string(text).find(part), std::string::npos) << "  in: " << std::string(text)
@@ -42,9 +43,9 @@ inline std::string quote(const std::string& s) {
   return q + "'";
 }
 
-// A fresh directory for one test's files.
+// A fresh directory for one test's files, of this process alone (builds side by side run the same tests).
 inline fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(testing::TempDir()) / ("coilsim_app_" + name);
+  const fs::path dir = fs::path(testing::TempDir()) / ("coilsim_app_" + name + "." + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 #include "geometry/volume.h"
 #include "io/expect_error.h"
@@ -23,7 +24,7 @@ namespace fs = std::filesystem;
 const fs::path kMeshes = fs::path(COILSIM_SOURCE_DIR) / ".." / "shared" / "data" / "meshes";
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(testing::TempDir()) / ("coilsim_mesh_" + name);
+  const fs::path dir = fs::path(testing::TempDir()) / ("coilsim_mesh_" + name + "." + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

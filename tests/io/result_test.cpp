@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 #include "io/json_writer.h"
 #include "io/expect_error.h"
@@ -33,7 +34,7 @@ Model smallModel() {
 }
 
 fs::path freshDir(const std::string& name) {
-  const fs::path dir = fs::path(testing::TempDir()) / ("coilsim_io_" + name);
+  const fs::path dir = fs::path(testing::TempDir()) / ("coilsim_io_" + name + "." + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 #include "geometry/phantom.h"
 #include "geometry/volume.h"
@@ -22,7 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path madeCase(const std::string& name) {
-  const fs::path dir = fs::path(testing::TempDir()) / ("coilsim_case_editor_" + name);
+  const fs::path dir = fs::path(testing::TempDir()) / ("coilsim_case_editor_" + name + "." + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   geometry::PhantomSpec spec;
