@@ -1,8 +1,8 @@
 #include "ui/case_editor_controls.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <utility>
 
 namespace coilsim::ui {
 namespace {
@@ -48,7 +48,6 @@ void CaseEditorControls::outcome(const std::string& what, const std::string& why
     message_ = what;
     refused_ = false;
     if (hooks_.view) view_ = hooks_.view();
-    sceneChanged_ = true;
     return;
   }
   const std::string text = what + " refused: " + why;
@@ -57,8 +56,6 @@ void CaseEditorControls::outcome(const std::string& what, const std::string& why
   message_ = text;
   refused_ = true;
 }
-
-bool CaseEditorControls::takeSceneChanged() { return std::exchange(sceneChanged_, false); }
 
 void CaseEditorControls::key(EditorKey k, EditorMods mods) {
   if (ask_ != EditorAsk::None) {

@@ -60,7 +60,6 @@ class CaseEditorControls {
   // The last thing that happened, in words; `refused` when it was a refusal.
   const std::string& message() const { return message_; }
   bool refused() const { return refused_; }
-  bool takeSceneChanged();
 
  private:
   void outcome(const std::string& what, const std::string& why);  // why empty: done
@@ -70,7 +69,7 @@ class CaseEditorControls {
   CaseEditorView view_;
   render::Camera camera_;
   int ax_ = 0, ay_ = 0, aw_ = 1, ah_ = 1;
-  bool fitted_ = false, sceneChanged_ = true;
+  bool fitted_ = false;
   // The left button's drag: the neck along its normal (shift) or the camera.
   bool leftDown_ = false, neckDrag_ = false, orbiting_ = false, rightDown_ = false;
   double pressX_ = 0, pressY_ = 0, lastX_ = 0, lastY_ = 0, dragApplied_ = 0;

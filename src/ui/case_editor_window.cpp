@@ -179,7 +179,6 @@ bool drawFrame(Frame& f, CaseEditorControls& c, int width, int height, double dt
   // The renderer's area counts from the bottom; the controls' from the top (the full height: the same).
   c.setArea(side, 0, width - side, height);
   const render::Rect area{side, 0, width - side, height};
-  c.takeSceneChanged();
   if (!f.renderer.render(c.view().scene, c.camera(), f.settings, width, height, area, error)) return false;
   f.imgui.newFrame(width, height, dt);
   drawPanel(c, side, height);
