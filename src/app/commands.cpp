@@ -163,7 +163,8 @@ constexpr std::array kCase{
     value("--neck-through", K::Text, "X,Y,Z", "edit: put the neck plane through this point (mm)"),
     value("--tip", K::Text, "X,Y,Z", "edit: put the catheter tip here (mm)"),
     flag("--window", "edit: in the window (drag the neck plane, click the tip, Ctrl+S saves)"),
-    value("--screenshot", K::OutFile, "PNG", "edit: the editor's view as a picture (off-screen; with --window its last frame)"),
+    value("--screenshot", K::OutFile, "PNG",
+          "edit: the editor's view as a picture (off-screen; with --window its last frame)"),
 };
 
 constexpr std::array<OptionSpec, 0> kNone{};

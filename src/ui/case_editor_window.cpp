@@ -127,7 +127,8 @@ void drawQuestion(CaseEditorControls& c) {
 void drawPanel(CaseEditorControls& c, int sidebar, int height) {
   ImGui::SetNextWindowPos(ImVec2(0, 0));
   ImGui::SetNextWindowSize(ImVec2(float(sidebar), float(height)));
-  ImGui::Begin("Case editor", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  ImGui::Begin("Case editor", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   const CaseEditorHooks& h = c.hooks();
   ImGui::TextWrapped("%s", h.title.c_str());
   ImGui::TextWrapped("saves to %s%s", h.savePath.c_str(), h.saveOverwrites ? " (asks first)" : "");

@@ -123,8 +123,8 @@ TEST(CaseEditorControls, AClickCastsTheRayThroughThePointProjectedUnderTheCursor
   c.setArea(x0, 0, w, h);
   // A point in view, projected by render's matrices (not the controls' ray formula) to window pixels.
   const Vec3 p(0.003, -0.002, 0.001);
-  const Eigen::Vector4f clip =
-      c.camera().projection(double(w) / h) * c.camera().view() * Eigen::Vector4f(float(p.x()), float(p.y()), float(p.z()), 1);
+  const Eigen::Vector4f world(float(p.x()), float(p.y()), float(p.z()), 1);
+  const Eigen::Vector4f clip = c.camera().projection(double(w) / h) * c.camera().view() * world;
   const double px = x0 + 0.5 * (clip.x() / clip.w() + 1) * w, py = 0.5 * (1 - clip.y() / clip.w()) * h;
   c.press(0, px, py, kNone);
   c.release(0, px, py);
