@@ -91,6 +91,7 @@ ui::CaseEditorView caseEditorView(const planning::CaseEditor& e) {
   addNeck(e, v.scene);
   addTip(e, v.scene);
   v.neckNormal = e.neck().normal;
+  v.tip = toM(e.catheter().tip);
   v.unsaved = e.edited();
   const geometry::SacMorphology& m = e.morphology();
   const Vec3 p = e.neck().point, n = e.neck().normal, t = e.catheter().tip, dir = e.catheter().direction;

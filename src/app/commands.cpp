@@ -226,9 +226,9 @@ constexpr std::array kCommands{
                 "edit --window: the surface, the sac (orange), the neck plane (cyan disc and normal) and the\n"
                 "catheter tip; shift + drag up/down moves the neck plane along its normal (0.05 mm a pixel),\n"
                 "Up/Down 0.1 mm, Page Up/Down 1 mm, I/K J/L tilt 1 deg, ctrl + click puts it through a surface\n"
-                "point; a click on the surface puts the tip mid-lumen there, T aims it at the neck; the\n"
-                "morphology updates live and refusals say why. Ctrl+S saves to --out (without --out over\n"
-                "CASE.json, after asking); Esc closes, asking when edits are unsaved.\n"
+                "point; a click on the surface (or a drag from the tip) puts the tip mid-lumen there, T aims\n"
+                "it at the neck; the morphology updates live and refusals say why. Ctrl+S saves to --out\n"
+                "(without --out over CASE.json, after asking); Esc closes, asking when edits are unsaved.\n"
                 "exit codes: 0 written (or the window closed), 1 no display or GL, 2 bad input or a surface\n"
                 "            it will not guess on"},
     CommandSpec{"completion", "print the bash completion script (installed with coilsim)", "completion bash", "bash",

@@ -43,6 +43,18 @@ void CaseEditorControls::rayAt(double x, double y, Vec3& origin, Vec3& direction
   direction = (camera_.forward() + u * t * aspect * camera_.right() + v * t * camera_.up()).normalized();
 }
 
+void CaseEditorControls::pixelOf(const Vec3& p, double& x, double& y) const {
+  const double t = std::tan(0.5 * camera_.fovY), aspect = double(aw_) / ah_;
+  const Vec3 r = p - camera_.eye();
+  const double z = r.dot(camera_.forward());
+  if (!(z > 0)) {  // behind the eye: on no pixel
+    x = y = NAN;
+    return;
+  }
+  x = ax_ + 0.5 * (r.dot(camera_.right()) / (z * t * aspect) + 1.0) * aw_;
+  y = ay_ + 0.5 * (1.0 - r.dot(camera_.up()) / (z * t)) * ah_;
+}
+
 void CaseEditorControls::outcome(const std::string& what, const std::string& why) {
   if (why.empty()) {
     message_ = what;
@@ -107,6 +119,9 @@ void CaseEditorControls::press(int button, double x, double y, EditorMods mods) 
   if (button != 0) return;
   leftDown_ = true, orbiting_ = false, neckDrag_ = mods.shift;
   pressX_ = x, pressY_ = y, dragApplied_ = 0, pressMods_ = mods;
+  double tx = 0, ty = 0;
+  pixelOf(view_.tip, tx, ty);
+  tipDrag_ = !mods.shift && !mods.ctrl && std::hypot(x - tx, y - ty) <= kTipGrabPixels;
 }
 
 void CaseEditorControls::move(double x, double y) {
@@ -125,6 +140,14 @@ void CaseEditorControls::move(double x, double y) {
     outcome(what, why);
     return;
   }
+  if (tipDrag_) {
+    // The tip follows the cursor, in the middle of the lumen under it.
+    if (dx == 0 && dy == 0) return;
+    Vec3 origin, direction;
+    rayAt(x, y, origin, direction);
+    if (hooks_.placeTip) outcome("catheter tip dragged", hooks_.placeTip(origin, direction));
+    return;
+  }
   if (!orbiting_ && std::hypot(x - pressX_, y - pressY_) > kClickSlop) orbiting_ = true;
   if (orbiting_) camera_.orbit(-0.01 * dx, 0.01 * dy);
 }
@@ -137,7 +160,7 @@ void CaseEditorControls::release(int button, double x, double y) {
   if (button != 0 || !leftDown_) return;
   move(x, y);
   leftDown_ = false;
-  if (neckDrag_ || orbiting_) return;
+  if (neckDrag_ || orbiting_ || (tipDrag_ && std::hypot(x - pressX_, y - pressY_) > kClickSlop)) return;
   // A click: ctrl puts the neck plane through the surface point, else the tip mid-lumen.
   Vec3 origin, direction;
   rayAt(x, y, origin, direction);

@@ -34,6 +34,8 @@ class CaseEditorControls {
   const render::Camera& camera() const { return camera_; }
   // The ray under window pixel (x, y): origin at the eye, unit direction.
   void rayAt(double x, double y, Vec3& origin, Vec3& direction) const;
+  // The window pixel where `p` (m) shows: rayAt's inverse; NaN behind the eye.
+  void pixelOf(const Vec3& p, double& x, double& y) const;
   bool inArea(double x, double y) const;
 
   // Events, in the order they happened; positions in window pixels.
@@ -70,8 +72,8 @@ class CaseEditorControls {
   render::Camera camera_;
   int ax_ = 0, ay_ = 0, aw_ = 1, ah_ = 1;
   bool fitted_ = false;
-  // The left button's drag: the neck along its normal (shift) or the camera.
-  bool leftDown_ = false, neckDrag_ = false, orbiting_ = false, rightDown_ = false;
+  // The left button's drag: the neck along its normal (shift), the tip (from the tip) or the camera.
+  bool leftDown_ = false, neckDrag_ = false, tipDrag_ = false, orbiting_ = false, rightDown_ = false;
   double pressX_ = 0, pressY_ = 0, lastX_ = 0, lastY_ = 0, dragApplied_ = 0;
   EditorMods pressMods_;
   EditorAsk ask_ = EditorAsk::None;

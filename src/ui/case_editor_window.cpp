@@ -161,8 +161,8 @@ void drawPanel(CaseEditorControls& c, int sidebar, int height) {
   ImGui::TextWrapped(
       "Shift + drag up/down: the neck plane along its normal, %.2f mm a pixel (up: toward the dome). "
       "Up/Down: %.1f mm, Page Up/Down: %.0f mm. I/K, J/L: tilt it %.0f deg. Ctrl + click on the surface: the "
-      "neck plane through that point. Click on the surface: the catheter tip in the middle of the lumen under "
-      "the cursor; T aims it at the neck. Drag: orbit, right drag: pan, wheel: zoom.",
+      "neck plane through that point. Click on the surface, or drag the tip: the catheter tip in the middle of "
+      "the lumen under the cursor; T aims it at the neck. Drag: orbit, right drag: pan, wheel: zoom.",
       kNeckDragMmPerPixel, kNeckKeyStepMm, kNeckPageStepMm, kTiltKeyStepDeg);
   ImGui::TextWrapped("Grey: the vessel; orange: the sac; cyan: the neck plane and its normal; yellow: the tip.");
   ImGui::End();

@@ -3,7 +3,7 @@
 // docs/planning.md): the vessel surface, the sac piece highlighted, the neck
 // plane as a disc with its normal and the catheter tip; the user moves the
 // neck plane (shift + drag, arrow keys, ctrl + click on the surface), places
-// the tip (click on the surface), reads the morphology live and saves.
+// the tip (click on the surface, or drag it), reads the morphology live and saves.
 //
 // The ui layer knows nothing of cases: the app (src/app/case_window.cpp)
 // fills these plain structs and hands every edit over as a callback to
@@ -22,6 +22,7 @@ struct CaseEditorView {
   DrawData scene;                                          // m, as the renderer draws
   std::vector<std::pair<std::string, std::string>> rows;   // the morphology: name, value with its unit
   Vec3 neckNormal = Vec3::UnitZ();                         // the first view looks across it
+  Vec3 tip = Vec3::Zero();                                 // m, the catheter tip: a drag from it moves it
   bool unsaved = false;                                    // edits since the last save
 };
 
@@ -45,6 +46,7 @@ inline constexpr double kNeckDragMmPerPixel = 0.05;  // shift + vertical drag, u
 inline constexpr double kNeckKeyStepMm = 0.1;        // Up / Down
 inline constexpr double kNeckPageStepMm = 1.0;       // Page Up / Page Down
 inline constexpr double kTiltKeyStepDeg = 1.0;       // I / K (about the view's horizontal), J / L (vertical)
+inline constexpr double kTipGrabPixels = 10.0;       // a drag starting this close to the tip moves the tip
 
 struct CaseEditorWindowOptions {
   int width = 1280, height = 800;

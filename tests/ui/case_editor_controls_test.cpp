@@ -23,6 +23,7 @@ struct Record {
   std::vector<std::pair<Vec3, Vec3>> tips, necks;
   int saves = 0;
   bool unsaved = false;
+  Vec3 tip = Vec3(0.004, 0.004, -0.004);  // m
 };
 
 CaseEditorHooks hooks(Record& r, bool overwrites = false) {
@@ -37,6 +38,7 @@ CaseEditorHooks hooks(Record& r, bool overwrites = false) {
     v.scene.points = {p, DrawPoint{}};
     v.scene.points[1].position = Vec3(-0.01, 0.005, 0.005);
     v.unsaved = r.unsaved;
+    v.tip = r.tip;
     return v;
   };
   h.moveNeck = [&r](double mm) -> std::string {
@@ -67,6 +69,13 @@ CaseEditorHooks hooks(Record& r, bool overwrites = false) {
 }
 
 constexpr EditorMods kShift{true, false}, kCtrl{false, true}, kNone{};
+
+// Window pixel of p through render's matrices (not the controls' own formula).
+void projected(const CaseEditorControls& c, const Vec3& p, int x0, int w, int h, double& px, double& py) {
+  const Eigen::Vector4f world(float(p.x()), float(p.y()), float(p.z()), 1);
+  const Eigen::Vector4f clip = c.camera().projection(double(w) / h) * c.camera().view() * world;
+  px = x0 + 0.5 * (clip.x() / clip.w() + 1) * w, py = 0.5 * (1 - clip.y() / clip.w()) * h;
+}
 
 TEST(CaseEditorControls, AShiftDragMovesTheNeckByWholePixelsTimesTheStep) {
   Record r;
@@ -123,9 +132,8 @@ TEST(CaseEditorControls, AClickCastsTheRayThroughThePointProjectedUnderTheCursor
   c.setArea(x0, 0, w, h);
   // A point in view, projected by render's matrices (not the controls' ray formula) to window pixels.
   const Vec3 p(0.003, -0.002, 0.001);
-  const Eigen::Vector4f world(float(p.x()), float(p.y()), float(p.z()), 1);
-  const Eigen::Vector4f clip = c.camera().projection(double(w) / h) * c.camera().view() * world;
-  const double px = x0 + 0.5 * (clip.x() / clip.w() + 1) * w, py = 0.5 * (1 - clip.y() / clip.w()) * h;
+  double px = 0, py = 0;
+  projected(c, p, x0, w, h, px, py);
   c.press(0, px, py, kNone);
   c.release(0, px, py);
   ASSERT_EQ(r.tips.size(), 1u);
@@ -140,6 +148,31 @@ TEST(CaseEditorControls, AClickCastsTheRayThroughThePointProjectedUnderTheCursor
   c.press(0, 100, 100, kNone);
   c.release(0, 100, 100);
   EXPECT_EQ(r.tips.size(), 1u);
+}
+
+TEST(CaseEditorControls, ADragFromTheTipMovesTheTipUnderTheCursor) {
+  Record r;
+  CaseEditorControls c(hooks(r));
+  c.setArea(300, 0, 900, 800);
+  double tx = 0, ty = 0;
+  projected(c, r.tip, 300, 900, 800, tx, ty);
+  double cx = 0, cy = 0;
+  c.pixelOf(r.tip, cx, cy);
+  EXPECT_NEAR(cx, tx, 1e-3);
+  EXPECT_NEAR(cy, ty, 1e-3);
+  const double yaw = c.camera().yaw;
+  c.press(0, tx + 4, ty - 3, kNone);  // within the grab radius
+  c.move(tx + 20, ty + 10);
+  c.move(tx + 40, ty + 25);
+  c.release(0, tx + 40, ty + 25);
+  EXPECT_EQ(c.camera().yaw, yaw);  // no orbit
+  ASSERT_EQ(r.tips.size(), 2u);    // one per move, none on the release where the cursor stopped
+  // The last ray runs through the pixel the cursor left the tip at: its origin's projection is that pixel.
+  const auto& [o, d] = r.tips.back();
+  double lx = 0, ly = 0;
+  projected(c, o + 0.02 * d, 300, 900, 800, lx, ly);
+  EXPECT_NEAR(lx, tx + 40, 0.05);
+  EXPECT_NEAR(ly, ty + 25, 0.05);
 }
 
 TEST(CaseEditorControls, ADragWithoutShiftOrbitsAndPlacesNothing) {
