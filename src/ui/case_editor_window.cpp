@@ -37,6 +37,10 @@ struct Event {
 struct Queue {
   std::vector<Event> events;
   double scale = 1;  // framebuffer pixels per window unit
+  // The cursor as the motion events left it. A button event carries no
+  // position, and asking the window system gives where the pointer is now,
+  // which on a busy machine is already past the press.
+  double x = 0, y = 0;
 };
 
 Queue* queueOf(GLFWwindow* w) { return static_cast<Queue*>(glfwGetWindowUserPointer(w)); }
@@ -45,14 +49,13 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
   if (action != GLFW_RELEASE) queueOf(w)->events.push_back({Event::Key, key, mods, 0, 0});
 }
 void onButton(GLFWwindow* w, int button, int action, int mods) {
-  double x = 0, y = 0;
-  glfwGetCursorPos(w, &x, &y);
   Queue* q = queueOf(w);
-  q->events.push_back({action == GLFW_PRESS ? Event::Press : Event::Release, button, mods, x * q->scale, y * q->scale});
+  q->events.push_back({action == GLFW_PRESS ? Event::Press : Event::Release, button, mods, q->x, q->y});
 }
 void onMove(GLFWwindow* w, double x, double y) {
   Queue* q = queueOf(w);
-  q->events.push_back({Event::Move, 0, 0, x * q->scale, y * q->scale});
+  q->x = x * q->scale, q->y = y * q->scale;
+  q->events.push_back({Event::Move, 0, 0, q->x, q->y});
 }
 void onScroll(GLFWwindow* w, double, double dy) { queueOf(w)->events.push_back({Event::Scroll, 0, 0, 0, dy}); }
 
@@ -220,6 +223,8 @@ int runCaseEditorWindow(const CaseEditorHooks& hooks, const CaseEditorWindowOpti
   int ww = 0, wh = 0;
   glfwGetWindowSize(window, &ww, &wh);
   queue.scale = ww > 0 ? double(backend->framebufferWidth()) / ww : 1.0;
+  glfwGetCursorPos(window, &queue.x, &queue.y);
+  queue.x *= queue.scale, queue.y *= queue.scale;
   // Our callbacks first: ImGui's GLFW backend chains to them.
   glfwSetWindowUserPointer(window, &queue);
   glfwSetKeyCallback(window, onKey);
