@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "app/case_window.h"
 #include "app/exit_codes.h"
 #include "io/json_reader.h"
 #include "io/json_writer.h"
@@ -22,7 +23,11 @@ constexpr const char* kUsage =
     "  --sac-point: a point inside the sac (mm), when the search finds several or none.\n"
     "       coilsim case edit CASE.json [--neck-shift MM] [--neck-through X,Y,Z] [--tip X,Y,Z] --out NEW.json\n"
     "  moves the neck plane (along its normal, or through a point) and the catheter tip,\n"
-    "  prints the morphology again and writes the edited case (no window yet).\n";
+    "  prints the morphology again and writes the edited case.\n"
+    "       coilsim case edit CASE.json --window [--out NEW.json] [--screenshot PNG]\n"
+    "  the same in a window (coilsim help case: the keys and the mouse); Ctrl+S saves to\n"
+    "  --out, or over CASE.json after asking. --screenshot without --window: the editor's\n"
+    "  view off-screen, as a picture.\n";
 
 bool parsePoint(const std::string& s, Vec3& p) {
   const char* at = s.data();
@@ -122,13 +127,17 @@ int runEdit(const std::vector<std::string>& args) {
     std::fprintf(stderr, "coilsim case edit: %s\n%s", message.c_str(), kUsage);
     return kExitUsage;
   };
-  std::string file, out;
+  std::string file, out, screenshot;
+  bool window = false;
   std::vector<std::pair<std::string, std::string>> edits;  // in the order given
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    if (a == "--out" || a == "--neck-shift" || a == "--neck-through" || a == "--tip") {
+    if (a == "--window") {
+      window = true;
+    } else if (a == "--out" || a == "--neck-shift" || a == "--neck-through" || a == "--tip" || a == "--screenshot") {
       if (i + 1 >= args.size()) return usage(a + " needs a value");
       if (a == "--out") out = args[++i];
+      else if (a == "--screenshot") screenshot = args[++i];
       else edits.emplace_back(a, args[++i]);
     } else if (!a.empty() && a[0] == '-') {
       return usage("unknown option \"" + a + "\"");
@@ -139,7 +148,13 @@ int runEdit(const std::vector<std::string>& args) {
     }
   }
   if (file.empty()) return usage("needs a case file");
-  if (out.empty()) return usage("needs --out NEW.json (the window editor is not built yet)");
+  if (out.empty() && !window && screenshot.empty()) return usage("needs --out NEW.json (or --window)");
+  for (const std::string& path : {out, screenshot})
+    if (!path.empty())
+      if (const std::string why = io::whyNotWritable(path); !why.empty()) return usage(why);
+#ifndef COILSIM_HAVE_UI
+  if (window || !screenshot.empty()) return usage("this build has no window or screenshots (no ui layer)");
+#endif
   try {
     planning::CaseEditor e(file);
     for (const auto& [option, value] : edits) {
@@ -156,12 +171,25 @@ int runEdit(const std::vector<std::string>& args) {
       }
       if (!ok) {
         std::fprintf(stderr, "coilsim case edit: %s: %s %s refused: %s\n", file.c_str(), option.c_str(), value.c_str(),
-                     option == "--tip" ? "the tip must lie inside the surface"
-                                       : "the neck plane must leave the sac centre on the dome side and cut the surface at an opening");
+                     e.refusal().c_str());
         return kExitUsage;
       }
     }
     printEdited(e);
+#ifdef COILSIM_HAVE_UI
+    if (window || !screenshot.empty()) {
+      const ui::CaseEditorHooks hooks = caseEditorHooks(e, file, out.empty() ? file : out);
+      ui::CaseEditorWindowOptions wo;
+      wo.screenshotPath = screenshot;
+      if (window) return ui::runCaseEditorWindow(hooks, wo);
+      std::string error;
+      if (!ui::renderCaseEditorOffscreen(hooks, wo, error)) {
+        std::fprintf(stderr, "coilsim case edit: %s\n", error.c_str());
+        return kExitFailure;
+      }
+      if (out.empty()) return kExitOk;
+    }
+#endif
     e.save(out);
     std::printf("wrote %s\n", out.c_str());
     return kExitOk;

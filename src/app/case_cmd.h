@@ -2,8 +2,8 @@
 // `coilsim case new SURFACE --out CASE.json [--sac-point x,y,z]`: a case made
 // from a patient's surface (planning/case_maker.h), its morphology printed.
 // `coilsim case edit CASE.json --neck-shift MM ... --out NEW.json`: the neck
-// plane and the tip moved through planning::CaseEditor, the case saved (the
-// window that drives the same editor by dragging is not built yet).
+// plane and the tip moved through planning::CaseEditor, the case saved; with
+// --window the same editor by hand (app/case_window.h).
 #include <string>
 #include <vector>
 

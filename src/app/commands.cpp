@@ -162,6 +162,9 @@ constexpr std::array kCase{
     number("--neck-shift", "MM", "edit: move the neck plane along its normal (mm)", -20, 20),
     value("--neck-through", K::Text, "X,Y,Z", "edit: put the neck plane through this point (mm)"),
     value("--tip", K::Text, "X,Y,Z", "edit: put the catheter tip here (mm)"),
+    flag("--window", "edit: in the window (drag the neck plane, click the tip, Ctrl+S saves)"),
+    value("--screenshot", K::OutFile, "PNG",
+          "edit: the editor's view as a picture (off-screen; with --window its last frame)"),
 };
 
 constexpr std::array<OptionSpec, 0> kNone{};
@@ -215,11 +218,19 @@ constexpr std::array kCommands{
         "Writes DIR/diagnosis.json and DIR/diagnosis.md.\nexit codes: 0 ok, 1 the diagnosis failed, 2 bad input"},
     CommandSpec{"case", "a planning case from a patient's surface, or edit one (docs/planning.md)",
                 "case new SURFACE --out CASE.json [--sac-point X,Y,Z] [--catalogue DIR]\n"
-                "case edit CASE.json [--neck-shift MM] [--neck-through X,Y,Z] [--tip X,Y,Z] --out NEW.json",
+                "case edit CASE.json [--neck-shift MM] [--neck-through X,Y,Z] [--tip X,Y,Z] --out NEW.json\n"
+                "case edit CASE.json --window [--out NEW.json] [--screenshot PNG]",
                 "new|edit FILE", K::Text, 2, 2, kCase,
                 "new: finds the sac and neck, the catheter tip, the morphology and a first coil; when unsure\n"
                 "(two sacs, no clear neck) it asks for --sac-point instead of guessing.\n"
-                "exit codes: 0 written, 2 bad input or a surface it will not guess on"},
+                "edit --window: the surface, the sac (orange), the neck plane (cyan disc and normal) and the\n"
+                "catheter tip; shift + drag up/down moves the neck plane along its normal (0.05 mm a pixel),\n"
+                "Up/Down 0.1 mm, Page Up/Down 1 mm, I/K J/L tilt 1 deg, ctrl + click puts it through a surface\n"
+                "point; a click on the surface (or a drag from the tip) puts the tip mid-lumen there, T aims\n"
+                "it at the neck; the morphology updates live and refusals say why. Ctrl+S saves to --out\n"
+                "(without --out over CASE.json, after asking); Esc closes, asking when edits are unsaved.\n"
+                "exit codes: 0 written (or the window closed), 1 no display or GL, 2 bad input or a surface\n"
+                "            it will not guess on"},
     CommandSpec{"completion", "print the bash completion script (installed with coilsim)", "completion bash", "bash",
                 K::Choice, 1, 1, kNone, "Try it without installing: source <(coilsim completion bash)"},
     CommandSpec{"help", "this text, or one command's usage", "help [COMMAND]\nCOMMAND --help\n--version", "COMMAND",

@@ -23,9 +23,7 @@ std::pair<int, int> farthestPair(const std::vector<Vec3>& p) {
 
 }  // namespace
 
-SacMorphology measureSac(const TriangleMesh& mesh, const Plane& neck, const Vec3& inSac, double vesselDiameter,
-                         bool neckOnly) {
-  SacMorphology m;
+std::vector<char> sacPiece(const TriangleMesh& mesh, const Plane& neck, const Vec3& inSac) {
   const size_t nt = mesh.triangles.size();
   std::vector<double> side(mesh.vertices.size());
   for (size_t v = 0; v < side.size(); ++v) side[v] = neck.side(mesh.vertices[v]);
@@ -59,8 +57,21 @@ SacMorphology measureSac(const TriangleMesh& mesh, const Plane& neck, const Vec3
     const double d = ((mesh.vertices[f[0]] + mesh.vertices[f[1]] + mesh.vertices[f[2]]) / 3.0 - inSac).squaredNorm();
     if (d < nearest) nearest = d, seed = int(t);
   }
-  if (seed < 0) return m;
-  const int piece = root(seed);
+  std::vector<char> piece(nt, 0);
+  if (seed < 0) return piece;
+  const int r = root(seed);
+  for (size_t t = 0; t < nt; ++t) piece[t] = above[t] && root(int(t)) == r;
+  return piece;
+}
+
+SacMorphology measureSac(const TriangleMesh& mesh, const Plane& neck, const Vec3& inSac, double vesselDiameter,
+                         bool neckOnly) {
+  SacMorphology m;
+  const size_t nt = mesh.triangles.size();
+  std::vector<double> side(mesh.vertices.size());
+  for (size_t v = 0; v < side.size(); ++v) side[v] = neck.side(mesh.vertices[v]);
+  const std::vector<char> piece = sacPiece(mesh, neck, inSac);
+  if (std::find(piece.begin(), piece.end(), char(1)) == piece.end()) return m;
 
   // Clip each triangle of the piece to the dome side; sum tetrahedra with
   // their apex on the plane (the cap adds nothing), collect the cut edges.
@@ -69,7 +80,7 @@ SacMorphology measureSac(const TriangleMesh& mesh, const Plane& neck, const Vec3
   std::vector<char> listed(mesh.vertices.size(), 0);
   double volume = 0;
   for (size_t t = 0; t < nt; ++t) {
-    if (!above[t] || root(int(t)) != piece) continue;
+    if (!piece[t]) continue;
     ++m.triangles;
     const Eigen::Vector3i& f = mesh.triangles[t];
     std::vector<Vec3> poly;

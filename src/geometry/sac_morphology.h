@@ -3,6 +3,8 @@
 // is the piece of the closed surface on the dome side of the neck plane that
 // holds a given point, closed by the plane. Mesh units. Definitions (and
 // their sources) in docs/planning.md, "Morphology of a sac".
+#include <vector>
+
 #include "geometry/volume.h"
 #include "physics/triangle_mesh.h"
 
@@ -30,6 +32,12 @@ struct SacMorphology {
 // leaves the size ratio 0. Returns all zeros when no surface lies on that
 // side of the plane. `neckOnly` skips the sac's diameters and heights
 // (quadratic in its points), for a caller that moves the plane.
+// The sac piece itself, one flag per triangle of `mesh`: the triangles
+// reaching the normal side of `neck`, connected there, that hold the one
+// nearest `inSac` (all zero when no triangle reaches that side). What
+// measureSac measures; the case editor highlights it.
+std::vector<char> sacPiece(const TriangleMesh& mesh, const Plane& neck, const Vec3& inSac);
+
 SacMorphology measureSac(const TriangleMesh& mesh, const Plane& neck, const Vec3& inSac, double vesselDiameter,
                          bool neckOnly = false);
 

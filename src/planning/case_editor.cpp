@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <utility>
 
 #include "geometry/medial_balls.h"
 #include "io/json_reader.h"
@@ -68,39 +69,56 @@ CaseEditor::CaseEditor(const std::string& file) : file_(file), doc_(readDocument
   if (!(morphology_.volume > 0)) plane.fail("the neck plane cuts off no sac volume");
 }
 
+bool CaseEditor::refuse(std::string why) {
+  refusal_ = std::move(why);
+  return false;
+}
+
 bool CaseEditor::tryNeck(const geometry::Plane& plane) {
-  if (!(plane.side(sacCentre_) > 0) || !plane.normal.allFinite()) return false;
+  if (!plane.normal.allFinite() || !plane.point.allFinite()) return refuse("the neck plane is not finite");
+  if (!(plane.side(sacCentre_) > 0))
+    return refuse("the neck plane would leave the sac centre on the vessel side (it must stay below the sac)");
   const geometry::SacMorphology m = geometry::measureSac(surface(), plane, sacCentre_, vesselDiameter_);
+  if (!(m.volume > 0)) return refuse("the neck plane would cut off no sac");
   // A plane below the ostium cuts the parent vessel, not a neck: the sac piece then has no opening.
-  if (!(m.volume > 0) || !(m.neckWidth > 0)) return false;
+  if (!(m.neckWidth > 0)) return refuse("the neck plane would cut the parent vessel, not the sac's opening");
   neck_ = plane, morphology_ = m, edited_ = true;
+  refusal_.clear();
   return true;
 }
 
-bool CaseEditor::moveNeck(double mm) { return std::isfinite(mm) && tryNeck({neck_.point + mm * neck_.normal, neck_.normal}); }
+bool CaseEditor::moveNeck(double mm) {
+  if (!std::isfinite(mm)) return refuse("the shift is not a number");
+  return tryNeck({neck_.point + mm * neck_.normal, neck_.normal});
+}
 
 bool CaseEditor::tiltNeck(const Vec3& axis, double radians) {
-  if (!(axis.norm() > 1e-12) || !std::isfinite(radians)) return false;
+  if (!(axis.norm() > 1e-12) || !axis.allFinite() || !std::isfinite(radians)) return refuse("no axis to tilt about");
   const Eigen::AngleAxisd turn(radians, axis.normalized());
   return tryNeck({neck_.point, (turn * neck_.normal).normalized()});
 }
 
-bool CaseEditor::placeNeckThrough(const Vec3& point) { return point.allFinite() && tryNeck({point, neck_.normal}); }
+bool CaseEditor::placeNeckThrough(const Vec3& point) { return tryNeck({point, neck_.normal}); }
 
 bool CaseEditor::placeTip(const Vec3& point) {
-  if (!point.allFinite() || !query_.inside(point)) return false;
+  if (!point.allFinite()) return refuse("the tip position is not finite");
+  if (!query_.inside(point)) return refuse("the catheter tip must lie inside the vessel surface");
   catheter_.tip = point, edited_ = catheterMoved_ = true;
+  refusal_.clear();
   return true;
 }
 
 bool CaseEditor::pointTip(const Vec3& direction) {
-  if (!(direction.norm() > 1e-12) || !direction.allFinite()) return false;
+  if (!(direction.norm() > 1e-12) || !direction.allFinite()) return refuse("the tip direction is zero or not finite");
   catheter_.direction = direction.normalized();
   Vec3 across = catheter_.referenceNormal - catheter_.referenceNormal.dot(catheter_.direction) * catheter_.direction;
   catheter_.referenceNormal = across.norm() > 1e-6 ? Vec3(across.normalized()) : Vec3(catheter_.direction.unitOrthogonal());
   edited_ = catheterMoved_ = true;
+  refusal_.clear();
   return true;
 }
+
+void CaseEditor::markSaved() { edited_ = false; }
 
 nlohmann::ordered_json CaseEditor::document() const {
   nlohmann::ordered_json d = doc_;

@@ -2,8 +2,9 @@
 // The model behind `coilsim case edit`: a case made from a surface, its neck
 // plane and catheter tip moved by the user, the morphology recomputed after
 // every move, and the case saved back with only those changed. No GL: the
-// window (src/ui/case_editor_window.*) draws it and forwards the user's
-// drags and clicks; tests drive it directly. Millimetres.
+// window (src/ui/case_editor_window.*, wired to this in src/app/case_window.cpp)
+// draws it and forwards the user's drags and clicks; tests drive it directly.
+// Millimetres.
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -27,10 +28,13 @@ class CaseEditor {
   const Catheter& catheter() const { return catheter_; }
   const Vec3& sacCentre() const { return sacCentre_; }
   const geometry::SacMorphology& morphology() const { return morphology_; }
+  // Edits since the case was read or last marked saved.
   bool edited() const { return edited_; }
+  // Why the last refused edit was refused, in words (empty after an accepted one).
+  const std::string& refusal() const { return refusal_; }
 
   // Drag the neck plane along its normal (mm, + toward the dome); refused
-  // (false, nothing changes) when the plane would leave the sac centre on
+  // (false, nothing changes, refusal() says why) when the plane would leave the sac centre on
   // the vessel side or cut off no sac.
   bool moveNeck(double mm);
   // Tilt it about an axis through its point (radians); same refusals.
@@ -47,9 +51,12 @@ class CaseEditor {
   nlohmann::ordered_json document() const;
   // Writes document() atomically. Throws std::runtime_error naming the file.
   void save(const std::string& path) const;
+  // After a save: edited() is false until the next accepted edit.
+  void markSaved();
 
  private:
   bool tryNeck(const geometry::Plane& plane);
+  bool refuse(std::string why);  // records why; returns false
 
   std::string file_;
   nlohmann::ordered_json doc_;
@@ -61,6 +68,7 @@ class CaseEditor {
   geometry::SacMorphology morphology_;
   bool edited_ = false;
   bool catheterMoved_ = false;  // only then is the scene's catheter rewritten
+  std::string refusal_;
 };
 
 }  // namespace coilsim::planning

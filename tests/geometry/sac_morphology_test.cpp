@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "support/meshes.h"
@@ -74,6 +75,29 @@ TEST(SacMorphology, NothingAboveThePlaneMeasuresZero) {
   const SacMorphology m = measureSac(test::icosphere(1, 2), Plane{Vec3(0, 0, 2), Vec3::UnitZ()}, Vec3::Zero(), 1);
   EXPECT_EQ(m.volume, 0);
   EXPECT_EQ(m.triangles, 0u);
+}
+
+// The piece measured is the one highlighted: on a sphere cut by a plane, the
+// triangles flagged are exactly those with a vertex above the plane (one
+// piece), all within the sphere's radius of its centre.
+TEST(SacPiece, IsTheTrianglesReachingAboveThePlane) {
+  const double R = 3.5;
+  const Vec3 centre(1.0, -2.0, 0.5);
+  const TriangleMesh sphere = test::icosphere(R, 4, centre);
+  const Plane plane{centre - 1.0 * Vec3::UnitZ(), Vec3::UnitZ()};
+  const std::vector<char> piece = sacPiece(sphere, plane, centre);
+  ASSERT_EQ(piece.size(), sphere.triangles.size());
+  size_t flagged = 0;
+  for (size_t t = 0; t < piece.size(); ++t) {
+    bool above = false;
+    for (int k = 0; k < 3; ++k) above |= plane.side(sphere.vertices[sphere.triangles[t][k]]) > 0;
+    EXPECT_EQ(bool(piece[t]), above) << t;
+    flagged += piece[t];
+  }
+  EXPECT_EQ(flagged, measureSac(sphere, plane, centre, 0).triangles);
+  // Above the top: nothing.
+  const std::vector<char> none = sacPiece(sphere, {centre + 2 * R * Vec3::UnitZ(), Vec3::UnitZ()}, centre);
+  EXPECT_EQ(std::count(none.begin(), none.end(), char(1)), 0);
 }
 
 }  // namespace

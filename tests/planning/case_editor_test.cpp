@@ -65,9 +65,27 @@ TEST(CaseEditor, RefusesANeckBeyondTheSacAndATipOutside) {
   CaseEditor e((dir / "case.json").string());
   const geometry::Plane before = e.neck();
   EXPECT_FALSE(e.moveNeck(50));  // past the dome: no sac left
+  EXPECT_NE(e.refusal().find("sac centre"), std::string::npos) << e.refusal();
+  EXPECT_FALSE(e.moveNeck(-6));  // below the ostium: through the parent vessel
+  EXPECT_NE(e.refusal().find("parent vessel"), std::string::npos) << e.refusal();
   EXPECT_FALSE(e.placeTip(Vec3(100, 100, 100)));
+  EXPECT_NE(e.refusal().find("inside the vessel"), std::string::npos) << e.refusal();
   EXPECT_FALSE(e.edited());
   EXPECT_EQ(e.neck().point, before.point);
+  ASSERT_TRUE(e.moveNeck(0.2));  // an accepted edit clears the reason
+  EXPECT_TRUE(e.refusal().empty());
+}
+
+TEST(CaseEditor, SavingMarksTheEditsSaved) {
+  const fs::path dir = madeCase("saved");
+  CaseEditor e((dir / "case.json").string());
+  ASSERT_TRUE(e.moveNeck(0.3));
+  EXPECT_TRUE(e.edited());
+  e.save((dir / "edited.json").string());
+  e.markSaved();
+  EXPECT_FALSE(e.edited());
+  ASSERT_TRUE(e.moveNeck(-0.3));
+  EXPECT_TRUE(e.edited());
 }
 
 TEST(CaseEditor, AShippedSphereCaseIsRefusedNamingTheFile) {
