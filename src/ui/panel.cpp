@@ -209,17 +209,23 @@ void drawPanel(Session& session, Views& views, PanelContext& ctx) {
   ImGui::Separator();
   // Everything else scrolls in the rest of the column.
   ImGui::BeginChild("##sections", ImVec2(0, 0), false);
+  std::string sections = session.hasDeployment() ? "Device" : "";  // for the layout dump: which were drawn
+  auto header = [&](const std::string& name, ImGuiTreeNodeFlags flags) {
+    sections += (sections.empty() ? "" : "|") + name;
+    return ImGui::CollapsingHeader(name.c_str(), flags);
+  };
   // Warnings (protrusion, wall force) first, where they are seen while pushing.
-  if (ctx.readouts && ImGui::CollapsingHeader(ctx.readouts.title.c_str(), ImGuiTreeNodeFlags_DefaultOpen))
+  if (ctx.readouts && header(ctx.readouts.title, ImGuiTreeNodeFlags_DefaultOpen))
     drawReadouts(ctx.readouts.compute(session.model(), session.state()));
-  if (session.hasDeployment() && ImGui::CollapsingHeader("Device messages")) drawDeviceMessages(session);
-  if (!session.hasDeployment() && ImGui::CollapsingHeader("Deployment", ImGuiTreeNodeFlags_DefaultOpen))
+  if (session.hasDeployment() && header("Device messages", ImGuiTreeNodeFlags_None)) drawDeviceMessages(session);
+  if (!session.hasDeployment() && header("Deployment", ImGuiTreeNodeFlags_DefaultOpen))
     drawDeploymentControls(session, ctx);
-  if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) viewSection(views, ctx);
-  if (ctx.setup && ImGui::CollapsingHeader("Coil and catheter", engineer)) drawSetupSection(*ctx.setup, ctx);
-  if (ImGui::CollapsingHeader("Simulation", engineer)) simulationSection(session, ctx);
-  if (ImGui::CollapsingHeader("Colours and markers")) overlaySection(session, ctx);
-  if (ImGui::CollapsingHeader("Effects", engineer)) effectsSection(session, ctx);
+  if (header("View", ImGuiTreeNodeFlags_DefaultOpen)) viewSection(views, ctx);
+  if (ctx.setup && header("Coil and catheter", engineer)) drawSetupSection(*ctx.setup, ctx);
+  if (header("Simulation", engineer)) simulationSection(session, ctx);
+  if (header("Colours and markers", ImGuiTreeNodeFlags_None)) overlaySection(session, ctx);
+  if (header("Effects", engineer)) effectsSection(session, ctx);
+  if (ctx.layout) ctx.layout->fact("sections", sections);
   if (ctx.interactive) ImGui::TextDisabled("F1 or ?: every key and mouse action");
   if (!ctx.glInfo.empty() && ctx.interactive) ImGui::TextDisabled("%s", ctx.glInfo.c_str());
   if (ctx.layout) {

@@ -1,6 +1,7 @@
 """See tests/ui/window-keys-test: the window under Xvfb, driven by xdotool."""
 import json
 import os
+import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -46,12 +47,26 @@ def run_window(size):
     dump = f"{out}/layout-run-{size}.json"
     win = Window([coilsim, "run", f"{root}/scenes/default.json", "--size", size], display, dump, out)
     try:
-        fits(win.wait("the run window's first frames", lambda l: "detach" in l["items"]), f"run window {size}")
+        first = win.wait("the run window's first frames", lambda l: "detach" in l["items"])
+        fits(first, f"run window {size}")
         win.key("Escape")
         code, _, err = win.close()
         check(code == 0, f"run window {size}: Esc closes it (exit {code}) {err.strip()[-200:]}")
+        return first["sections"]
     finally:
         win.kill()
+
+
+def offscreen_sections(size):
+    """The panel sections of the headless run's picture (its own layout dump)."""
+    dump = f"{out}/layout-headless-{size}.json"
+    env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
+    env["COILSIM_LAYOUT_DUMP"] = dump
+    r = subprocess.run([coilsim, "run", f"{root}/scenes/default.json", "--headless", "--duration", "0.01",
+                        "--size", size, "--screenshot", f"{out}/headless-{size}.png"], env=env, cwd=out,
+                       capture_output=True, text=True, timeout=120)
+    check(r.returncode == 0, f"headless run with a screenshot (exit {r.returncode}) {r.stderr.strip()[-200:]}")
+    return json.load(open(dump))["sections"] if os.path.exists(dump) else None
 
 
 def practice_refusal_and_help():
@@ -150,7 +165,10 @@ def validate_escape():
 
 
 for size in ("1280x720", "1920x1080"):
-    run_window(size)
+    window = run_window(size)
+    picture = offscreen_sections(size)
+    check(window == picture and "read-outs" in (window or ""),
+          f"{size}: the off-screen picture's panel sections {picture!r} are the window's {window!r}")
 practice_refusal_and_help()
 practice_detach()
 validate_escape()
