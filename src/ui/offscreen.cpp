@@ -36,6 +36,7 @@ bool renderOffscreen(const Model& model, const State& state, const ViewerOptions
   PanelContext panel;
   panel.sceneName = options.scenePath;
   panel.readouts = options.readouts;
+  panel.legend = options.legend;
   // The same sections as the window (the choice is shown, not offered).
   std::optional<SetupChoices> setup = options.setup;
   if (setup) panel.setup = &*setup;

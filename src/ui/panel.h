@@ -8,6 +8,7 @@
 #include "render/renderer.h"
 #include "ui/layout_dump.h"
 #include "ui/readouts.h"
+#include "ui/scene_legend.h"
 #include "ui/session.h"
 #include "ui/setup.h"
 #include "ui/views.h"
@@ -47,6 +48,7 @@ struct PanelContext {
   const SetupChoices* setup = nullptr;  // optional coil and catheter choice (window)
   SetupStatus setupStatus;
   std::string effectsLocked;    // non-empty: why the effect switches cannot change (practice)
+  std::vector<LegendEntry> legend;  // the scene's legend (drawn with or without the panel)
   bool helpOpen = false;        // the help overlay (F1 or ?) is shown
   LayoutDump* layout = nullptr; // optional: where the controls were drawn (tests under Xvfb)
   // Requests, handled by the caller after the frame.

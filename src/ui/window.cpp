@@ -72,6 +72,7 @@ int runWindow(Model& model, State& state, const ViewerOptions& options) {
   PanelContext panel;
   panel.sceneName = options.scenePath;
   panel.readouts = options.readouts;
+  panel.legend = options.legend;
   panel.effectsLocked = options.effectsLocked;
   std::optional<SetupChoices> setup = options.setup;
   if (setup) panel.setup = &*setup;
