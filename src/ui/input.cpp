@@ -42,9 +42,12 @@ WindowInput::WindowInput(GLFWwindow* window, Session& session, Views& views, Pan
 }
 
 void WindowInput::onKey(int key, int mods) {
-  // The detach confirmation is modal: it takes its keys first, and no other.
+  // The detach confirmation is modal: it takes its keys first, and no other
+  // but the screenshot.
   if (panel_.device.confirmDetach) {
-    if (key == GLFW_KEY_D || key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER)
+    if (key == GLFW_KEY_F12)
+      screenshot_ = true;
+    else if (key == GLFW_KEY_D || key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER)
       confirmDetach(session_, panel_.device);
     else if (key == GLFW_KEY_ESCAPE)
       panel_.device.confirmDetach = false;
