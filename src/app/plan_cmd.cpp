@@ -13,6 +13,7 @@
 #include "app/exit_codes.h"
 #include "app/format.h"
 #include "app/plan_runner.h"
+#include "app/sac_drawing.h"
 #include "app/stop_signal.h"
 #include "io/json_writer.h"
 #include "io/units.h"
@@ -146,7 +147,9 @@ bool screenshot(const PlanSetup& setup, const CandidateResult& r, const PlanArgs
   v.drawPanel = false;
   const auto mesh = setup.sac.mesh;
   // Runs have the sac as a wall (drawn with the model's obstacles); a scene's own wall may be another mesh.
-  v.addDrawData = [mesh](const Model& model, const State&, DrawData& d) {
+  const DrawMesh neck = neckDisc(setup.sac);
+  v.addDrawData = [mesh, neck](const Model& model, const State&, DrawData& d) {
+    if (!neck.triangles.empty()) d.meshes.push_back(neck);
     for (const Obstacle& o : model.obstacles)
       if (o.mesh == mesh) return;
     DrawMesh m;
@@ -155,6 +158,7 @@ bool screenshot(const PlanSetup& setup, const CandidateResult& r, const PlanArgs
     m.triangles = mesh->triangles;
     d.meshes.push_back(std::move(m));
   };
+  v.legend = sacLegend(setup.sac);
   return ui::renderOffscreen(r.model, r.state, v, error);
 }
 #endif

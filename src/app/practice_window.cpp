@@ -9,6 +9,7 @@
 
 #include "app/format.h"
 #include "app/exit_codes.h"
+#include "app/sac_drawing.h"
 #include "app/window_setup.h"
 #include "io/json_writer.h"
 #include "planning/run_contacts.h"
@@ -115,7 +116,12 @@ ui::ViewerOptions practiceViewer(const planning::PracticeCase& pc, const plannin
   v.scenePath = pc.name + " - " + session.runningScore().coil;
   v.view = view;
   const Deployment dep = session.deployment();
-  v.addDrawData = [dep](const Model& m, const State& s, DrawData& d) { planning::appendInactiveCatheter(m, s, dep, d); };
+  const DrawMesh neck = neckDisc(pc.sac);
+  v.addDrawData = [dep, neck](const Model& m, const State& s, DrawData& d) {
+    planning::appendInactiveCatheter(m, s, dep, d);
+    if (!neck.triangles.empty()) d.meshes.push_back(neck);
+  };
+  v.legend = sacLegend(pc.sac);
   v.readouts = liveReadouts(pc.sac, dep, pc.goal.maxWallForce, "Practice: " + pc.name);
   return v;
 }
@@ -132,6 +138,7 @@ int practiseInWindow(const planning::PracticeCase& pc, std::string coil, const s
   v.scenePath = pc.name;
   v.view = view;
   v.addDrawData = first.draw;
+  v.legend = sacLegend(pc.sac);
   v.readouts = first.readouts;
   v.observer = first.observer;
   // X-ray views only, as in the procedure, when the session starts in one.

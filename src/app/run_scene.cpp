@@ -294,6 +294,13 @@ int run(const RunOptions& o) {
 #ifdef COILSIM_HAVE_UI
     std::string error;
     ui::ViewerOptions v = viewerOptions(o);
+    // The panel's sections as the window shows them: the read-outs, the coil and catheter.
+    if (model.device) {
+      std::string note;
+      const std::optional<planning::Sac> sac = planning::sceneSac(spec, note);
+      if (sac) v.readouts = liveReadouts(*sac, *model.device, planning::Goal{}.maxWallForce, "Aneurysm read-outs");
+      v.setup = sceneSetupChoices(spec, sac);
+    }
     if (!ui::renderOffscreen(model, state, v, error)) {
       std::fprintf(stderr, "coilsim: screenshot %s failed: %s\n", o.screenshot.c_str(), error.c_str());
       return kExitFailure;

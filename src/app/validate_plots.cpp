@@ -89,12 +89,11 @@ double tickStep(double range, int n) {
   return 10 * p;
 }
 
-// Blue (0) -> cyan -> yellow -> red (1).
+// Blue (0) -> cyan -> yellow -> red (1): the error scale's colours.
 Colour heat(double t) {
-  t = std::clamp(t, 0.0, 1.0);
-  const double r = std::clamp(2.0 * t - 0.5, 0.0, 1.0) * 255, b = std::clamp(1.5 - 2.0 * t, 0.0, 1.0) * 255;
-  const double g = std::clamp(1.0 - std::abs(2.0 * t - 1.0) * 0.8, 0.0, 1.0) * 220;
-  return {std::uint8_t(r), std::uint8_t(g), std::uint8_t(b)};
+  const std::array<float, 3> c = errorScaleColour(t);
+  return {std::uint8_t(std::lround(255 * c[0])), std::uint8_t(std::lround(255 * c[1])),
+          std::uint8_t(std::lround(255 * c[2]))};
 }
 
 // A plot frame mapping data (x, y) to pixels inside a box, with ticks.
@@ -127,6 +126,23 @@ struct Frame {
 };
 
 }  // namespace
+
+double errorScalePosition(double errorMm) {
+  if (!std::isfinite(errorMm) || errorMm <= kErrorColourLowMm) return 0.0;
+  if (errorMm >= kErrorColourHighMm) return 1.0;
+  return std::log10(errorMm / kErrorColourLowMm) / std::log10(kErrorColourHighMm / kErrorColourLowMm);
+}
+
+std::array<float, 3> errorScaleColour(double t) {
+  t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0);
+  const double r = std::clamp(2.0 * t - 0.5, 0.0, 1.0), b = std::clamp(1.5 - 2.0 * t, 0.0, 1.0);
+  const double g = std::clamp(1.0 - std::abs(2.0 * t - 1.0) * 0.8, 0.0, 1.0) * (220.0 / 255.0);
+  return {float(r), float(g), float(b)};
+}
+
+std::string errorScaleLegend() {
+  return fmt("node error: fixed log scale, blue <= %g mm, ", kErrorColourLowMm) + fmt("red >= %g mm", kErrorColourHighMm);
+}
 
 Canvas plotErrorAlongArc(const std::vector<validation::StageComparison>& stages, const std::vector<std::string>& names,
                          int width, int height) {
@@ -174,8 +190,6 @@ Canvas plotOverlay(const validation::StageComparison& st, const validation::Stag
   const Vec3 up = -down, w = h.cross(up);
   std::vector<Vec3> all = st.sim;
   all.insert(all.end(), measured.centerline.begin(), measured.centerline.end());
-  double eMax = 1e-9;
-  for (size_t i = 0; i < st.sim.size(); ++i) eMax = std::max(eMax, (st.sim[i] - st.meas[i]).norm());
   // The same scale in both views, so that the two pictures compare.
   struct Range { double lo = 1e30, hi = -1e30; void add(double v) { lo = std::min(lo, v), hi = std::max(hi, v); } };
   Range rh, rv, rw;
@@ -208,7 +222,7 @@ Canvas plotOverlay(const validation::StageComparison& st, const validation::Stag
     for (size_t i = 1; i < st.sim.size(); ++i) {
       const double e = 0.5 * ((st.sim[i - 1] - st.meas[i - 1]).norm() + (st.sim[i] - st.meas[i]).norm());
       P(st.sim[i - 1], ax, ay), P(st.sim[i], bx, by);
-      p.line(ax, ay, bx, by, heat(e / eMax), 1.5);
+      p.line(ax, ay, bx, by, heat(errorScalePosition(e * 1e3)), 1.5);
     }
   }
   // Legend and colour bar.
@@ -218,12 +232,22 @@ Canvas plotOverlay(const validation::StageComparison& st, const validation::Stag
   p.text(lx, 76, "measured spline", kBlack);
   p.line(lx - 22, 79, lx - 4, 79, kBlack);
   p.text(lx, 92, "simulated, coloured", kBlack);
-  p.text(lx, 104, "by node error (mm)", kBlack);
-  const int barTop = 125, barBottom = height - 60;
+  p.text(lx, 104, "by node error (mm),", kBlack);
+  p.text(lx, 116, "fixed log scale", kBlack);
+  const int barTop = 137, barBottom = height - 60;
   for (int y = barTop; y <= barBottom; ++y) p.line(lx, y, lx + 18, y, heat(double(barBottom - y) / (barBottom - barTop)));
-  p.text(lx + 24, barTop - 3, fmt("%.3g", eMax * 1e3), kBlack);
-  p.text(lx + 24, (barTop + barBottom) / 2 - 3, fmt("%.3g", 0.5 * eMax * 1e3), kBlack);
-  p.text(lx + 24, barBottom - 3, "0", kBlack);
+  // Ticks at each decade and its 3s, labelled in mm; the ends say "or less" / "or more".
+  const double decades = std::log10(kErrorColourHighMm / kErrorColourLowMm);
+  for (double d = 0; d <= decades + 1e-9; d += 1.0)
+    for (double m : {1.0, 3.0}) {
+      const double mm = kErrorColourLowMm * std::pow(10.0, d) * m;
+      if (mm > kErrorColourHighMm * (1 + 1e-9)) continue;
+      const double y = barBottom - errorScalePosition(mm) * (barBottom - barTop);
+      p.line(lx + 18, y, lx + 22, y, kBlack);
+      const bool end = mm <= kErrorColourLowMm * (1 + 1e-9) || mm >= kErrorColourHighMm * (1 - 1e-9);
+      p.text(lx + 25, y - 3, fmt("%g", mm) + (end ? (mm <= kErrorColourLowMm * 1.001 ? " or less" : " or more") : ""),
+             kBlack);
+    }
   return p.take();
 }
 

@@ -4,6 +4,7 @@
 // of its own, so that it can run on the panel's background thread.
 #include "app/validate_window.h"
 #include "app/format.h"
+#include "app/validate_plots.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,10 +27,29 @@ namespace {
 
 using namespace validation;
 
-// Blue (no error) to red (the stage's largest), through white-ish magenta.
-Colour errorColour(double e, double top) {
-  const float t = float(std::clamp(top > 0 ? e / top : 0.0, 0.0, 1.0));
-  return Colour(0.15f + 0.85f * t, 0.25f * (1 - t), 1.0f - 0.85f * t, 1.0f);
+// The fixed error scale (app/validate_plots.h), the same as the overlay PNGs'.
+Colour errorColour(double errorM) {
+  const std::array<float, 3> c = errorScaleColour(errorScalePosition(units::mToMm(errorM)));
+  return Colour(c[0], c[1], c[2], 1.0f);
+}
+
+// The scale's legend for the panel: 64 colours, ticks at each decade and its 3s.
+ui::ErrorColourScale errorLegend() {
+  ui::ErrorColourScale s;
+  s.legend = errorScaleLegend();
+  for (int i = 0; i < 64; ++i) {
+    const std::array<float, 3> c = errorScaleColour((i + 0.5) / 64.0);
+    s.colours.emplace_back(c[0], c[1], c[2], 1.0f);
+  }
+  const int decades = int(std::lround(std::log10(kErrorColourHighMm / kErrorColourLowMm)));
+  for (int d = 0; d <= decades; ++d)
+    for (double m : {1.0, 3.0}) {
+      const double mm = kErrorColourLowMm * std::pow(10.0, d) * m;
+      if (d == decades && m > 1) continue;
+      s.ticks.emplace_back(float(errorScalePosition(mm)), fmt("%g", mm));
+    }
+  s.ticks.back().second += " mm";
+  return s;
 }
 
 ui::ValidationStageRow row(const Stage& st, const StageComparison& s) {
@@ -57,13 +77,11 @@ ui::ValidationStageRow row(const Stage& st, const StageComparison& s) {
 DrawData scene(const Measurement& m, const StageComparison& s) {
   DrawData d;
   if (!s.ok || s.sim.empty()) return d;
-  double top = 0;
-  for (size_t i = 0; i < s.sim.size(); ++i) top = std::max(top, (s.sim[i] - s.meas[i]).norm());
   DrawTube coil;
   coil.name = "coil (simulated)";
   coil.radius = m.coil.wireRadius;
   coil.centre = s.sim;
-  for (size_t i = 0; i < s.sim.size(); ++i) coil.colours.push_back(errorColour((s.sim[i] - s.meas[i]).norm(), top));
+  for (size_t i = 0; i < s.sim.size(); ++i) coil.colours.push_back(errorColour((s.sim[i] - s.meas[i]).norm()));
   DrawTube meas;
   meas.name = "measured";
   meas.radius = 0.5 * m.coil.wireRadius;
@@ -134,6 +152,7 @@ int runValidateWindow(const WorkbenchArgs& a, const WindowArgs& w) {
       }
   h.initiallyOn = a.effects;
   h.before = view(m, before);
+  h.errorScale = errorLegend();
   const std::vector<std::string> baseFit = a.fit.empty() ? std::vector<std::string>{"young_modulus"} : a.fit;
   std::vector<double> beforeErrors;
   for (const StageComparison& s : before) beforeErrors.push_back(s.ok ? s.metrics.stageError : NAN);

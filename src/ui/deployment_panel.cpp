@@ -1,7 +1,7 @@
 // ---------------------------------------------------------------------------
 // Deployment controls: push / pull at a speed (also P / O held), twist (Q / E
-// held, Ctrl + wheel), detach with a confirmation, catheter retraction, stop,
-// reset; the controller's refusals and the limits reached, and the read-outs
+// held, Ctrl + wheel), detach with a confirmation, catheter retraction, stop;
+// the controller's refusals and the limits reached, and the read-outs
 // (deployed length, twist, catheter position). Every command goes through
 // Session::command, the same controller API that timelines use.
 // ---------------------------------------------------------------------------
@@ -26,12 +26,13 @@ DeviceCommand make(DeviceCommand::Kind kind, double rate, double amount = 0) {
   return c;
 }
 
-void readOuts(const Session& session) {
+void readOuts(const Session& session, PanelContext& ctx) {
   const Deployment& dep = *session.deployment();
   const DeviceState& ds = session.deploymentState();
   char overlay[64];
   std::snprintf(overlay, sizeof overlay, "%.1f of %.1f mm out", units::mToMm(ds.deployed), units::mToMm(dep.coilLength));
   ImGui::ProgressBar(float(dep.coilLength > 0 ? ds.deployed / dep.coilLength : 0.0), ImVec2(-1.0f, 0.0f), overlay);
+  if (ctx.layout) ctx.layout->markLastItem("deployed");
   ImGui::Text("twist %+.0f\xc2\xb0", units::radToDeg(ds.twist));
   if (ds.tipOffset != 0) {
     ImGui::SameLine();
@@ -56,58 +57,104 @@ void readOuts(const Session& session) {
     ImGui::TextDisabled("timeline: %zu of %zu commands started", session.timelineCursor(), session.timelineSize());
 }
 
-void motionButtons(Session& session, DeviceControls& dc) {
+// A slider with its unit on the right, on one line (the compact layout).
+void speedSlider(const char* id, const char* unit, double& value, double lo, double hi, const char* format,
+                 ImGuiSliderFlags flags) {
+  ImGui::SetNextItemWidth(-ImGui::CalcTextSize("catheter mm/s").x - ImGui::GetStyle().ItemInnerSpacing.x);
+  ImGui::SliderScalar(id, ImGuiDataType_Double, &value, &lo, &hi, format, flags);
+  ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+  ImGui::TextDisabled("%s", unit);
+}
+
+void motionButtons(Session& session, PanelContext& ctx) {
   using K = DeviceCommand::Kind;
+  DeviceControls& dc = ctx.device;
+  auto mark = [&](const char* name) {
+    if (ctx.layout) ctx.layout->markLastItem(name);
+  };
   const Deployment& dep = *session.deployment();
   const double maxSpeedMmS = units::mToMm(dep.maxPushSpeed);
   const double maxTwistDegS = units::radToDeg(dep.maxTwistRate);
-  ImGui::TextDisabled("push / pull speed [mm/s]");
-  ImGui::SetNextItemWidth(-1.0f);
-  const double lo = 0.1;
-  ImGui::SliderScalar("##speed", ImGuiDataType_Double, &dc.pushSpeedMmS, &lo, &maxSpeedMmS, "%.2f",
-                      ImGuiSliderFlags_Logarithmic);
+  speedSlider("##speed", "push mm/s", dc.pushSpeedMmS, 0.1, maxSpeedMmS, "%.2f", ImGuiSliderFlags_Logarithmic);
+  mark("push_speed");
   const double speed = units::mmPerSToMPerS(dc.pushSpeedMmS);
   if (ImGui::Button("Push (P)")) session.command(make(K::Push, speed));
+  mark("push");
   ImGui::SameLine();
   if (ImGui::Button("Pull (O)")) session.command(make(K::Pull, speed));
+  mark("pull");
   ImGui::SameLine();
   if (ImGui::Button("Stop")) session.command(make(K::Stop, 0));
+  mark("stop");
 
-  ImGui::TextDisabled("twist rate [\xc2\xb0/s]");
-  ImGui::SetNextItemWidth(-1.0f);
-  const double tlo = 5.0;
-  ImGui::SliderScalar("##twist", ImGuiDataType_Double, &dc.twistRateDegS, &tlo, &maxTwistDegS, "%.0f");
+  speedSlider("##twist", "twist \xc2\xb0/s", dc.twistRateDegS, 5.0, maxTwistDegS, "%.0f", ImGuiSliderFlags_None);
+  mark("twist_rate");
   const double rate = units::degPerSToRadPerS(dc.twistRateDegS);
   const double quarter = units::degToRad(90.0);
   if (ImGui::Button("Twist -90\xc2\xb0 (Q)")) session.command(make(K::Twist, -rate, quarter));
+  mark("twist_minus");
   ImGui::SameLine();
   if (ImGui::Button("Twist +90\xc2\xb0 (E)")) session.command(make(K::Twist, rate, quarter));
+  mark("twist_plus");
 
-  ImGui::TextDisabled("catheter retraction [mm/s]");
-  ImGui::SetNextItemWidth(-1.0f);
-  ImGui::SliderScalar("##retract", ImGuiDataType_Double, &dc.retractSpeedMmS, &lo, &maxSpeedMmS, "%.2f",
-                      ImGuiSliderFlags_Logarithmic);
+  speedSlider("##retract", "catheter mm/s", dc.retractSpeedMmS, 0.1, maxSpeedMmS, "%.2f",
+              ImGuiSliderFlags_Logarithmic);
+  mark("retract_speed");
   if (ImGui::Button("Retract catheter 2 mm"))
     session.command(make(K::Retract, units::mmPerSToMPerS(dc.retractSpeedMmS), units::mmToM(2.0)));
+  mark("retract");
 }
 
-// Detaching cannot be undone (except by Reset): ask first.
-void detachButton(Session& session, DeviceControls& dc) {
+}  // namespace
+
+bool requestDetach(Session& session, DeviceControls& dc) {
+  const std::string why = session.wouldRefuse(make(DeviceCommand::Kind::Detach, 0));
+  if (!why.empty()) {
+    session.noteRefusal(why);
+    dc.confirmDetach = false;
+    return false;
+  }
+  dc.confirmDetach = true;
+  return true;
+}
+
+void confirmDetach(Session& session, DeviceControls& dc) {
+  dc.confirmDetach = false;
+  session.command(make(DeviceCommand::Kind::Detach, 0));
+}
+
+void drawDetachConfirmation(Session& session, PanelContext& ctx) {
+  constexpr const char* kId = "Detach the coil?###detach";
+  DeviceControls& dc = ctx.device;
+  if (dc.confirmDetach && !ImGui::IsPopupOpen(kId)) ImGui::OpenPopup(kId);
+  // Centred over the scene, away from the panel: where its buttons were,
+  // there is only the scene when it closes.
+  const ImGuiIO& io = ImGui::GetIO();
+  const float scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
+  const float left = float(ctx.sidebarWidth) / scale;
+  ImGui::SetNextWindowPos(ImVec2(0.5f * (left + io.DisplaySize.x), 0.5f * io.DisplaySize.y), ImGuiCond_Always,
+                          ImVec2(0.5f, 0.5f));
+  if (!ImGui::BeginPopupModal(kId, nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove)) return;
   if (!dc.confirmDetach) {
-    if (ImGui::Button("Detach... (D)")) dc.confirmDetach = true;
+    ImGui::CloseCurrentPopup();  // answered by a key
+  } else {
+    ImGui::TextUnformatted("Detach the coil from the pusher?");
+    ImGui::TextDisabled("It cannot be pushed, pulled or twisted after this (Reset starts again).");
+    if (ImGui::Button("Detach (D or Enter)")) confirmDetach(session, dc);
+    if (ctx.layout) ctx.layout->markLastItem("detach_confirm");
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel (Esc)")) dc.confirmDetach = false;
+    if (ctx.layout) ctx.layout->markLastItem("detach_cancel");
+    if (!dc.confirmDetach) ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
+void drawDeviceMessages(const Session& session) {
+  if (session.deviceMessages().empty()) {
+    ImGui::TextDisabled("none yet");
     return;
   }
-  ImGui::TextColored(kRefused, "Detach the coil from the pusher?");
-  if (ImGui::Button("Yes, detach")) {
-    session.command(make(DeviceCommand::Kind::Detach, 0));
-    dc.confirmDetach = false;
-  }
-  ImGui::SameLine();
-  if (ImGui::Button("Cancel")) dc.confirmDetach = false;
-}
-
-void messages(const Session& session) {
-  if (session.deviceMessages().empty()) return;
   ImGui::PushTextWrapPos(0.0f);
   // Newest first: the one that matters is the last thing that happened.
   const auto& list = session.deviceMessages();
@@ -120,8 +167,6 @@ void messages(const Session& session) {
   ImGui::PopTextWrapPos();
 }
 
-}  // namespace
-
 void drawDeploymentControls(Session& session, PanelContext& ctx) {
   if (!session.hasDeployment()) {
     ImGui::PushTextWrapPos(0.0f);
@@ -130,17 +175,24 @@ void drawDeploymentControls(Session& session, PanelContext& ctx) {
     ImGui::PopTextWrapPos();
     return;
   }
-  readOuts(session);
+  readOuts(session, ctx);
   // Nothing is greyed out: the controller says why a command cannot be done.
-  motionButtons(session, ctx.device);
+  motionButtons(session, ctx);
   ImGui::SameLine();
-  detachButton(session, ctx.device);
-  if (ImGui::Button("Reset deployment (R)")) session.reset();
-  if (!session.playing()) {
-    ImGui::SameLine();
-    ImGui::TextDisabled("paused: Space plays");
+  if (ImGui::Button("Detach... (D)")) requestDetach(session, ctx.device);
+  if (ctx.layout) ctx.layout->markLastItem("detach");
+  // The newest message where it is seen (a refusal says why nothing moved);
+  // all of them in the "Device messages" section below.
+  if (!session.deviceMessages().empty()) {
+    const std::string& last = session.deviceMessages().back();
+    ImGui::PushTextWrapPos(0.0f);
+    if (last.find("refused") != std::string::npos)
+      ImGui::TextColored(kRefused, "%s", last.c_str());
+    else
+      ImGui::TextDisabled("%s", last.c_str());
+    ImGui::PopTextWrapPos();
+    if (ctx.layout) ctx.layout->markLastItem("last_message");
   }
-  messages(session);
 }
 
 }  // namespace coilsim::ui

@@ -41,6 +41,9 @@ bool drawFrame(FrameParts& p, int width, int height, double dt, std::string& err
   p.imgui.newFrame(width, height, dt);
   if (p.drawPanel) drawPanel(p.session, p.views, p.panel);
   drawViewLabels(p.renderer.viewports(), height, p.views);
+  const ImVec2 fbScale = ImGui::GetIO().DisplayFramebufferScale;
+  drawSceneLegend(p.panel.legend, float(p.panel.sidebarWidth) / (fbScale.x > 0 ? fbScale.x : 1.0f),
+                  float(height) / (fbScale.y > 0 ? fbScale.y : 1.0f));
   p.renderer.bindFrame();
   p.imgui.render();
   return true;

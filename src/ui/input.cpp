@@ -2,6 +2,7 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,8 +15,8 @@ namespace {
 
 WindowInput* self(GLFWwindow* w) { return static_cast<WindowInput*>(glfwGetWindowUserPointer(w)); }
 
-void keyCallback(GLFWwindow* w, int key, int, int action, int) {
-  if (action == GLFW_PRESS || action == GLFW_REPEAT) self(w)->onKey(key);
+void keyCallback(GLFWwindow* w, int key, int, int action, int mods) {
+  if (action == GLFW_PRESS || action == GLFW_REPEAT) self(w)->onKey(key, mods);
 }
 
 void scrollCallback(GLFWwindow* w, double, double dy) { self(w)->onScroll(dy); }
@@ -40,7 +41,34 @@ WindowInput::WindowInput(GLFWwindow* window, Session& session, Views& views, Pan
   glfwSetScrollCallback(window_, scrollCallback);
 }
 
-void WindowInput::onKey(int key) {
+void WindowInput::onKey(int key, int mods) {
+  // The detach confirmation is modal: it takes its keys first, and no other
+  // but the screenshot.
+  if (panel_.device.confirmDetach) {
+    if (key == GLFW_KEY_F12)
+      screenshot_ = true;
+    else if (key == GLFW_KEY_D || key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER)
+      confirmDetach(session_, panel_.device);
+    else if (key == GLFW_KEY_ESCAPE)
+      panel_.device.confirmDetach = false;
+    return;
+  }
+  // F1 or ? (Shift + / on a US layout) shows or hides the help; Esc hides it first.
+  if (key == GLFW_KEY_F1 || (key == GLFW_KEY_SLASH && (mods & GLFW_MOD_SHIFT))) {
+    panel_.helpOpen = !panel_.helpOpen;
+    return;
+  }
+  if (key == GLFW_KEY_ESCAPE && panel_.helpOpen) {
+    panel_.helpOpen = false;
+    return;
+  }
+  // Esc closes the window even while a panel item has the keyboard (a
+  // confirmation just closed by a key still holds it for a frame), except
+  // while text is typed into a field: there it ends the typing.
+  if (key == GLFW_KEY_ESCAPE) {
+    if (!ImGui::GetIO().WantTextInput) panel_.closeRequested = true;
+    return;
+  }
   if (!keyboardFree_) return;
   switch (key) {
     case GLFW_KEY_SPACE: session_.setPlaying(!session_.playing()); break;
@@ -51,13 +79,12 @@ void WindowInput::onKey(int key) {
       session_.reset();
       device_.clear();
       break;
-    case GLFW_KEY_D: panel_.device.confirmDetach = true; break;
+    case GLFW_KEY_D: requestDetach(session_, panel_.device); break;
     case GLFW_KEY_1: views_.setMode(render::ViewMode::Shaded); break;
     case GLFW_KEY_2: views_.setMode(render::ViewMode::XRay); break;
     case GLFW_KEY_3: views_.setMode(render::ViewMode::Biplane); break;
     case GLFW_KEY_F: panel_.fitRequested = true; break;
     case GLFW_KEY_F12: screenshot_ = true; break;
-    case GLFW_KEY_ESCAPE: panel_.closeRequested = true; break;
     case GLFW_KEY_EQUAL:
     case GLFW_KEY_KP_ADD: views_.camera().zoom(1.15); break;
     case GLFW_KEY_MINUS:

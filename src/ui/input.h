@@ -24,7 +24,7 @@ class WindowInput {
   std::string nextScreenshotName();
 
   // Called from the GLFW callbacks.
-  void onKey(int key);
+  void onKey(int key, int mods);
   void onScroll(double dy);
 
  private:

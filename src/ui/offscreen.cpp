@@ -5,6 +5,7 @@
 #include "render/gl_loader.h"
 #include "render/image.h"
 #include "ui/frame.h"
+#include "ui/layout_dump.h"
 #include "ui/viewer.h"
 
 namespace coilsim::ui {
@@ -35,6 +36,10 @@ bool renderOffscreen(const Model& model, const State& state, const ViewerOptions
   PanelContext panel;
   panel.sceneName = options.scenePath;
   panel.readouts = options.readouts;
+  panel.legend = options.legend;
+  // The same sections as the window (the choice is shown, not offered).
+  std::optional<SetupChoices> setup = options.setup;
+  if (setup) panel.setup = &*setup;
   panel.interactive = false;
   panel.glInfo = render::glDescription();
   render::RenderSettings settings;
@@ -43,8 +48,12 @@ bool renderOffscreen(const Model& model, const State& state, const ViewerOptions
 
   if (session.showingOlderState())
     std::fprintf(stderr, "coilsim: the state to render is not healthy; drawing nothing in its place\n");
+  // The layout of the frame written, as the window writes its own (tests compare the two).
+  LayoutDump layout(LayoutDump::pathFromEnvironment());
+  if (layout.enabled()) panel.layout = &layout;
   layoutPanelOnly(parts, options.width, options.height);
-  if (!drawFrame(parts, options.width, options.height, 1.0 / 60.0, error)) return false;
+  layout.begin(float(options.width), float(options.height));
+  if (!drawFrame(parts, options.width, options.height, 1.0 / 60.0, error) || !layout.write(error)) return false;
   render::Image image;
   if (!renderer.readFrame(image)) {
     error = "could not read the off-screen frame back";

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "io/units.h"
+#include "ui/help_overlay.h"
 #include "physics/integrator.h"
 
 namespace coilsim::ui {
@@ -29,20 +30,31 @@ EnergyUnit energyUnit(double largest) {
   return {"nJ", 1e9};
 }
 
-void simulationSection(Session& session, PanelContext& ctx) {
-  const State& s = session.state();
+// Play, step, reset and the time: always at the top of the panel.
+void transportRow(Session& session, PanelContext& ctx) {
   if (session.playing()) {
     if (ImGui::Button("Pause (Space)")) session.setPlaying(false);
   } else {
     if (ImGui::Button("Play (Space)")) session.setPlaying(true);
   }
+  if (ctx.layout) ctx.layout->markLastItem("play");
   ImGui::SameLine();
   ImGui::BeginDisabled(session.playing());
   if (ImGui::Button("Step (N)")) session.stepOnce();
   ImGui::EndDisabled();
   ImGui::SameLine();
   if (ImGui::Button("Reset (R)")) session.reset();
+  if (ctx.layout) ctx.layout->markLastItem("reset");
+  // The time beside them when it fits (a narrow panel puts it below).
+  char time[32];
+  std::snprintf(time, sizeof time, "t = %.3f s", session.state().time);
+  ImGui::SameLine();
+  if (ImGui::GetContentRegionAvail().x < ImGui::CalcTextSize(time).x) ImGui::NewLine();
+  ImGui::TextUnformatted(time);
+}
 
+void simulationSection(Session& session, PanelContext& ctx) {
+  const State& s = session.state();
   ImGui::Text("simulated time  %.4f s", s.time);
   const double meanStep = s.stats.steps ? s.stats.totalStepSeconds / double(s.stats.steps) : 0.0;
   ImGui::Text("time step       %.3g ms", 1e3 * session.model().timeStep);
@@ -171,27 +183,6 @@ void effectsSection(Session& session, const PanelContext& ctx) {
   ImGui::EndDisabled();
 }
 
-void helpSection() {
-  ImGui::TextUnformatted(
-      "left drag       orbit (C-arm in X-ray)\n"
-      "right/mid drag  pan (or shift + left)\n"
-      "wheel, +/-      zoom\n"
-      "arrows          orbit, shift: pan\n"
-      "Space N R       play/pause, step, reset\n"
-      "P / O held      push / pull the coil\n"
-      "Q / E held      twist left / right\n"
-      "Ctrl + wheel    twist by steps\n"
-      "D               detach (asks first)\n"
-      "1 2 3           3D, X-ray, biplane\n"
-      "F               fit to scene\n"
-      "F12             screenshot (coilsim-N.png)\n"
-      "Esc             close\n"
-      "gamepad         triggers push / pull, right stick\n"
-      "                x twists, y zooms; left stick\n"
-      "                orbits (pans with LB); A play/\n"
-      "                pause, B reset, X fit, Y view");
-}
-
 }  // namespace
 
 void drawPanel(Session& session, Views& views, PanelContext& ctx) {
@@ -199,23 +190,69 @@ void drawPanel(Session& session, Views& views, PanelContext& ctx) {
   ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
   // sidebarWidth is in framebuffer pixels, ImGui works in window units (HiDPI).
   const float scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
-  ImGui::SetNextWindowSize(ImVec2(float(ctx.sidebarWidth) / scale, io.DisplaySize.y), ImGuiCond_Always);
+  const float sidebar = float(ctx.sidebarWidth) / scale;
+  ImGui::SetNextWindowSize(ImVec2(sidebar, io.DisplaySize.y), ImGuiCond_Always);
   const std::string title = "coilsim" + (ctx.sceneName.empty() ? std::string() : "  " + ctx.sceneName) + "###panel";
-  ImGui::Begin(title.c_str(), nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-  if (ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) simulationSection(session, ctx);
-  // Deployment controls (push / pull / twist / detach): see deployment_panel.cpp.
+  ImGui::Begin(title.c_str(), nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+  // The compact clinical layout: what a clinician needs while pushing stays
+  // open, the engineer's figures start closed.
+  const bool compact = io.DisplaySize.y < 900.0f;
+  const ImGuiTreeNodeFlags engineer = compact ? ImGuiTreeNodeFlags_None : ImGuiTreeNodeFlags_DefaultOpen;
+  transportRow(session, ctx);
+  // The device controls never scroll away.
+  if (session.hasDeployment()) {
+    ImGui::Separator();
+    drawDeploymentControls(session, ctx);
+  }
+  ImGui::Separator();
+  // Everything else scrolls in the rest of the column.
+  ImGui::BeginChild("##sections", ImVec2(0, 0), false);
+  std::string sections = session.hasDeployment() ? "Device" : "";  // for the layout dump: which were drawn
+  auto header = [&](const std::string& name, ImGuiTreeNodeFlags flags) {
+    sections += (sections.empty() ? "" : "|") + name;
+    return ImGui::CollapsingHeader(name.c_str(), flags);
+  };
   // Warnings (protrusion, wall force) first, where they are seen while pushing.
-  if (ctx.readouts && ImGui::CollapsingHeader(ctx.readouts.title.c_str(), ImGuiTreeNodeFlags_DefaultOpen))
+  if (ctx.readouts && header(ctx.readouts.title, ImGuiTreeNodeFlags_DefaultOpen))
     drawReadouts(ctx.readouts.compute(session.model(), session.state()));
-  if (ImGui::CollapsingHeader("Deployment", ImGuiTreeNodeFlags_DefaultOpen)) drawDeploymentControls(session, ctx);
-  if (ctx.setup && ImGui::CollapsingHeader("Coil and catheter", ImGuiTreeNodeFlags_DefaultOpen))
-    drawSetupSection(*ctx.setup, ctx);
-  if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) viewSection(views, ctx);
-  if (ImGui::CollapsingHeader("Colours and markers")) overlaySection(session, ctx);
-  if (ImGui::CollapsingHeader("Effects", ImGuiTreeNodeFlags_DefaultOpen)) effectsSection(session, ctx);
-  if (ctx.interactive && ImGui::CollapsingHeader("Mouse, keys, gamepad")) helpSection();
+  if (session.hasDeployment() && header("Device messages", ImGuiTreeNodeFlags_None)) drawDeviceMessages(session);
+  if (!session.hasDeployment() && header("Deployment", ImGuiTreeNodeFlags_DefaultOpen))
+    drawDeploymentControls(session, ctx);
+  if (header("View", ImGuiTreeNodeFlags_DefaultOpen)) viewSection(views, ctx);
+  if (ctx.setup && header("Coil and catheter", engineer)) drawSetupSection(*ctx.setup, ctx);
+  if (header("Simulation", engineer)) simulationSection(session, ctx);
+  if (header("Colours and markers", ImGuiTreeNodeFlags_None)) overlaySection(session, ctx);
+  if (header("Effects", engineer)) effectsSection(session, ctx);
+  if (ctx.layout) ctx.layout->fact("sections", sections);
+  if (ctx.interactive) ImGui::TextDisabled("F1 or ?: every key and mouse action");
   if (!ctx.glInfo.empty() && ctx.interactive) ImGui::TextDisabled("%s", ctx.glInfo.c_str());
+  if (ctx.layout) {
+    ctx.layout->fact("sections_scroll_y", double(ImGui::GetScrollY()));
+    ctx.layout->fact("sections_scroll_max_y", double(ImGui::GetScrollMaxY()));
+  }
+  ImGui::EndChild();
+  if (ctx.layout) {
+    const ImVec2 p = ImGui::GetWindowPos(), sz = ImGui::GetWindowSize();
+    ctx.layout->mark("panel", p.x, p.y, p.x + sz.x, p.y + sz.y);
+  }
   ImGui::End();
+
+  drawDetachConfirmation(session, ctx);
+  if (ctx.helpOpen) drawHelpOverlay("Keys and mouse (F1)###help", runWindowHelp(), sidebar, io.DisplaySize.x,
+                                    io.DisplaySize.y, ctx.layout);
+  if (ctx.layout) {
+    const DeviceState& ds = session.deploymentState();
+    ctx.layout->fact("detach_confirm_open", ctx.device.confirmDetach);
+    ctx.layout->fact("help_open", ctx.helpOpen);
+    ctx.layout->fact("time_s", session.state().time);
+    ctx.layout->fact("deployed_mm", units::mToMm(ds.deployed));
+    ctx.layout->fact("coil_mm", session.deployment() ? units::mToMm(session.deployment()->coilLength) : 0.0);
+    ctx.layout->fact("detached", ds.detached);
+    ctx.layout->fact("last_message",
+                     session.deviceMessages().empty() ? std::string() : session.deviceMessages().back());
+  }
 }
 
 void drawViewLabels(const std::vector<render::ViewportInfo>& viewports, int frameHeight, const Views& views) {

@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "render/renderer.h"
+#include "ui/layout_dump.h"
 #include "ui/readouts.h"
+#include "ui/scene_legend.h"
 #include "ui/session.h"
 #include "ui/setup.h"
 #include "ui/views.h"
@@ -20,7 +22,7 @@ struct DeviceControls {
   double twistRateDegS = 180.0;  // deg/s, twist (hold Q / E)
   double twistStepDeg = 15.0;    // deg per wheel notch with Ctrl
   double retractSpeedMmS = 1.0;  // mm/s, catheter retraction
-  bool confirmDetach = false;    // the detach confirmation is open
+  bool confirmDetach = false;    // the detach confirmation is open (a modal over the scene)
 };
 
 // Colours and markers drawn on request (the moment colouring itself lives
@@ -46,6 +48,9 @@ struct PanelContext {
   const SetupChoices* setup = nullptr;  // optional coil and catheter choice (window)
   SetupStatus setupStatus;
   std::string effectsLocked;    // non-empty: why the effect switches cannot change (practice)
+  std::vector<LegendEntry> legend;  // the scene's legend (drawn with or without the panel)
+  bool helpOpen = false;        // the help overlay (F1 or ?) is shown
+  LayoutDump* layout = nullptr; // optional: where the controls were drawn (tests under Xvfb)
   // Requests, handled by the caller after the frame.
   bool fitRequested = false;
   bool closeRequested = false;
@@ -53,12 +58,29 @@ struct PanelContext {
   int setupCoil = -1, setupCatheter = -1;
 };
 
+// The panel fits any window from 1280x720 up: the device controls (and
+// play, step, reset) stay at the top, never scrolled away; every other
+// section collapses and scrolls below them; below 900 pixels of height
+// (the compact clinical layout) the simulation figures and effect switches
+// start closed. Then the detach confirmation and the help overlay, when open.
 void drawPanel(Session& session, Views& views, PanelContext& context);
 
 // Labels in the corner of each projection ("AP", "LAT", C-arm angles).
 void drawViewLabels(const std::vector<render::ViewportInfo>& viewports, int frameHeight, const Views& views);
 
-// The deployment section (push, pull, twist, detach), see deployment_panel.cpp.
+// The deployment controls (push, pull, twist, detach), see deployment_panel.cpp.
 void drawDeploymentControls(Session& session, PanelContext& context);
+// The device's messages (refusals, limits reached), newest first.
+void drawDeviceMessages(const Session& session);
+
+// D or the Detach button: opens the confirmation, unless the controller
+// would refuse the detach now (then the refusal is noted at once and
+// nothing asks). Returns true if it asks.
+bool requestDetach(Session& session, DeviceControls& controls);
+// D or Enter in the confirmation, or its button: detaches and closes it.
+void confirmDetach(Session& session, DeviceControls& controls);
+// The confirmation itself, a modal centred over the scene area (never over
+// the panel's buttons), answered by mouse or by the keys above.
+void drawDetachConfirmation(Session& session, PanelContext& context);
 
 }  // namespace coilsim::ui

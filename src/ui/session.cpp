@@ -90,6 +90,12 @@ std::string Session::command(const DeviceCommand& c) {
   return why;
 }
 
+std::string Session::wouldRefuse(const DeviceCommand& c) const {
+  if (!model_.device) return "refused: this scene has no deployment (no coil in a catheter to drive)";
+  State scratch = state_;
+  return coilsim::command(model_, scratch, observer_ ? observer_->adjust(c) : c);
+}
+
 // What runTimeline does before each step, in the same order, so that a
 // window run and a headless run of one timeline reach the same state.
 void Session::giveInputs() {

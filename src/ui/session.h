@@ -98,6 +98,14 @@ class Session {
   // or the reason for refusing it; refusals also go to the message list.
   // Without a deployment every command is refused.
   std::string command(const DeviceCommand& command);
+  // Why the controller would refuse `command` now ("" if it would take it),
+  // asked of physics' command() on a copy of the state, which is dropped:
+  // nothing changes and nothing is noted (a confirmation asks only when the
+  // answer could be yes).
+  std::string wouldRefuse(const DeviceCommand& command) const;
+  // Notes a refusal found by wouldRefuse in the message list (and tells the
+  // observer), as command() notes its own.
+  void noteRefusal(const std::string& why) { note(why); }
   // Refusals and limits reached ("the coil is fully deployed"), newest last,
   // each with the simulated time; at most the last 8.
   const std::deque<std::string>& deviceMessages() const { return deviceMessages_; }

@@ -21,8 +21,10 @@
 #include "render/backend.h"
 #include "render/image.h"
 #include "render/renderer.h"
+#include "ui/help_overlay.h"
 #include "ui/imgui_layer.h"
 #include "ui/realtime.h"
+#include "ui/validation_charts.h"
 #include "ui/views.h"
 
 namespace coilsim::ui {
@@ -102,7 +104,15 @@ class Workbench {
   }
   bool takeSceneChanged() { return std::exchange(sceneChanged_, false); }
 
-  void draw(int sidebarWidth, int height);
+  void draw(int sidebarWidth, int width, int height);
+  // Keys as in the run and practice windows: F1 or ? shows or hides the
+  // help; Esc hides it, or else asks the window to close.
+  void onKey(int key, int mods) {
+    if (key == GLFW_KEY_F1 || (key == GLFW_KEY_SLASH && (mods & GLFW_MOD_SHIFT))) helpOpen_ = !helpOpen_;
+    else if (key == GLFW_KEY_ESCAPE && helpOpen_) helpOpen_ = false;
+    else if (key == GLFW_KEY_ESCAPE && !ImGui::GetIO().WantTextInput) closeRequested_ = true;
+  }
+  bool closeRequested() const { return closeRequested_; }
 
  private:
   void drawTable();
@@ -114,6 +124,7 @@ class Workbench {
   ValidationView after_;
   size_t stage_ = 0;
   bool showBefore_ = false, sceneChanged_ = true;
+  bool helpOpen_ = false, closeRequested_ = false;
   std::thread thread_;
   std::mutex mutex_;
   std::atomic<bool> fitting_{false}, stop_{false};
@@ -195,11 +206,18 @@ void Workbench::drawFit() {
   ImGui::ProgressBar(busy ? fraction : (fits_ > 0 ? 1.0f : 0.0f), ImVec2(-1, 0), label);
   float top = 0;
   for (float h : history) top = std::max(top, h);
-  char overlay[96] = "RMS residual per coordinate (mm) along the evaluations";
+  char title[96] = "RMS residual per coordinate (mm)";
   if (!history.empty())
-    std::snprintf(overlay, sizeof overlay, "RMS residual: %.4f mm (first %.4f)", history.back(), history.front());
-  ImGui::PlotLines("##iterations", history.data(), int(history.size()), 0, overlay, 0.0f, 1.1f * top + 1e-6f,
-                   ImVec2(ImGui::GetContentRegionAvail().x, 80));
+    std::snprintf(title, sizeof title, "RMS residual (mm): %.4f, first %.4f", history.back(), history.front());
+  if (history.empty()) {
+    ImGui::TextDisabled("RMS residual (mm) per optimiser evaluation: no fit yet");
+  } else {
+    std::vector<float> index(history.size());
+    for (size_t i = 0; i < index.size(); ++i) index[i] = float(i + 1);
+    ChartAxes axes{"optimiser evaluation", "RMS residual (mm)", 1.0f, float(std::max<size_t>(history.size(), 2)),
+                   0.0f, 1.1f * top + 1e-6f, true};
+    drawLineChart("##iterations", index, history, axes, title, 0.0f, 110.0f);
+  }
   if (!after_.ok) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "fit failed: %s", after_.message.c_str());
   if (stop_ && busy) ImGui::TextUnformatted("stopping after this evaluation...");
   if (!after_.effects.empty() || !after_.fitted.empty()) {
@@ -217,19 +235,23 @@ void Workbench::drawErrorPlots() {
     top = std::max(top, s.noiseFloorMm);
     for (float e : s.errorMm) top = std::max(top, e);
   }
-  ImGui::Text("Node error |x_sim - x_meas| along the arc length (%s), common scale 0-%.3f mm:",
-              showingBefore() ? "before" : "after", 1.1 * top);
+  ImGui::TextWrapped("Node error |x_sim - x_meas| (mm) against arc length (mm), %s; one scale for all stages; "
+                     "dashed: the noise floor sqrt(3) point_sigma.",
+                     showingBefore() ? "before" : "after");
+  float arcMax = 1;
+  for (const ValidationStageRow& s : v.stages)
+    if (!s.arcMm.empty()) arcMax = std::max(arcMax, s.arcMm.back());
   for (const ValidationStageRow& s : v.stages) {
-    char overlay[160];
+    char title[160];
     const float peak = s.errorMm.empty() ? 0.0f : *std::max_element(s.errorMm.begin(), s.errorMm.end());
-    std::snprintf(overlay, sizeof overlay, "%s: 0-%.0f mm, peak %.3f mm, noise %.3f mm", s.name.c_str(),
-                  s.arcMm.empty() ? 0.0 : double(s.arcMm.back()), double(peak), double(s.noiseFloorMm));
-    ImGui::PlotLines(("##arc" + s.name).c_str(), s.errorMm.data(), int(s.errorMm.size()), 0, overlay, 0.0f,
-                     1.1f * top + 1e-6f, ImVec2(ImGui::GetContentRegionAvail().x, 46));
+    std::snprintf(title, sizeof title, "%s: peak %.3f mm, noise %.3f mm", s.name.c_str(), double(peak),
+                  double(s.noiseFloorMm));
+    const ChartAxes axes{"arc length s (mm)", "node error (mm)", 0.0f, arcMax, 0.0f, 1.1f * top + 1e-6f};
+    drawLineChart(("##arc" + s.name).c_str(), s.arcMm, s.errorMm, axes, title, s.noiseFloorMm, 92.0f);
   }
 }
 
-void Workbench::draw(int sidebarWidth, int height) {
+void Workbench::draw(int sidebarWidth, int width, int height) {
   ImGui::SetNextWindowPos(ImVec2(0, 0));
   ImGui::SetNextWindowSize(ImVec2(float(sidebarWidth), float(height)));
   ImGui::Begin("Validation", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
@@ -246,12 +268,16 @@ void Workbench::draw(int sidebarWidth, int height) {
   if (stage_ < v.stages.size()) {
     const ValidationStageRow& s = v.stages[stage_];
     const float peak = s.errorMm.empty() ? 0.0f : *std::max_element(s.errorMm.begin(), s.errorMm.end());
-    ImGui::TextWrapped("3D (%s): %s, the coil coloured by node error from blue (0) to red (%.3f mm), the measured "
-                       "centre line grey, the catheter's last 5 mm dark. Drag to orbit, wheel to zoom; click a stage in "
-                       "the table to see it.",
+    ImGui::TextWrapped("3D (%s): %s (peak %.3f mm), the coil coloured by node error, the measured centre line grey, "
+                       "the catheter's last 5 mm dark. Drag to orbit, wheel to zoom; click a stage in the table to see it.",
                        showingBefore() ? "before" : "after", s.name.c_str(), double(peak));
+    drawErrorColourScale(hooks_.errorScale);
   }
+  ImGui::TextDisabled("F1 or ?: every key and mouse action; Esc closes the window");
   ImGui::End();
+  if (helpOpen_)
+    drawHelpOverlay("Keys and mouse (F1)###help", validateWindowHelp(), float(sidebarWidth), float(width),
+                    float(height), nullptr);
 }
 
 struct Frame {
@@ -272,7 +298,7 @@ bool drawFrame(Frame& f, Workbench& w, int width, int height, double dt, std::st
   f.settings.drawPoints = false;
   if (!f.renderer.render(scene, f.views.camera(), f.settings, width, height, area, error)) return false;
   f.imgui.newFrame(width, height, dt);
-  w.draw(side, height);
+  w.draw(side, width, height);
   f.renderer.bindFrame();
   f.imgui.render();
   return true;
@@ -315,12 +341,18 @@ int runValidationWindow(const ValidationHooks& hooks, const ValidationWindowOpti
     return 1;
   }
   GLFWwindow* window = static_cast<GLFWwindow*>(backend->nativeWindow());
+  Workbench w(hooks);
+  // Keys through a GLFW callback, installed before ImGui's (which chains to
+  // it): a key pressed and released within one frame is still seen.
+  glfwSetWindowUserPointer(window, &w);
+  glfwSetKeyCallback(window, [](GLFWwindow* win, int key, int, int action, int mods) {
+    if (action == GLFW_PRESS) static_cast<Workbench*>(glfwGetWindowUserPointer(win))->onKey(key, mods);
+  });
   auto f = std::make_unique<Frame>();
   if (!f->renderer.init(error) || !f->imgui.init(window, error)) {
     std::fprintf(stderr, "coilsim: %s\n", error.c_str());
     return 1;
   }
-  Workbench w(hooks);
   if (!applyScript(w, o, error)) {
     std::fprintf(stderr, "coilsim: %s\n", error.c_str());
     return 2;
@@ -329,7 +361,7 @@ int runValidationWindow(const ValidationHooks& hooks, const ValidationWindowOpti
   const double start = wallSeconds();
   double last = start;
   int exitCode = 0, framesAfterFit = 0;
-  while (!glfwWindowShouldClose(window)) {
+  while (!glfwWindowShouldClose(window) && !w.closeRequested()) {
     glfwPollEvents();
     const double now = wallSeconds(), dt = now - last;
     last = now;

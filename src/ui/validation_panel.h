@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "physics/draw_data.h"
+#include "ui/validation_charts.h"
 
 namespace coilsim::ui {
 
@@ -56,6 +57,7 @@ struct ValidationHooks {
                                const std::function<bool()>& stopRequested)>
       fit;
   int maxEvaluations = 120;                 // for the progress bar
+  ErrorColourScale errorScale;              // how the scenes colour the coil by error (its legend)
 };
 
 struct ValidationWindowOptions {

@@ -9,6 +9,7 @@
 #include "physics/model.h"
 #include "physics/state.h"
 #include "ui/readouts.h"
+#include "ui/scene_legend.h"
 #include "ui/session.h"
 #include "ui/setup.h"
 
@@ -40,6 +41,9 @@ struct ViewerOptions {
   std::shared_ptr<RunObserver> observer;
   // Window: user inputs given at their times as if typed (tests under Xvfb).
   std::vector<ScriptedInput> script;
+  // What the picture's colours are (coil, sac wall, neck plane), in the
+  // scene's lower left corner; empty: none.
+  std::vector<LegendEntry> legend;
   bool xrayOnly = false;        // window: no 3D view (practice in the X-ray views only)
   std::string effectsLocked;    // window: why the effect switches are fixed (practice: the case's physics)
 };

@@ -13,6 +13,7 @@
 #include "render/image.h"
 #include "ui/frame.h"
 #include "ui/input.h"
+#include "ui/layout_dump.h"
 #include "ui/realtime.h"
 #include "ui/viewer.h"
 
@@ -71,6 +72,7 @@ int runWindow(Model& model, State& state, const ViewerOptions& options) {
   PanelContext panel;
   panel.sceneName = options.scenePath;
   panel.readouts = options.readouts;
+  panel.legend = options.legend;
   panel.effectsLocked = options.effectsLocked;
   std::optional<SetupChoices> setup = options.setup;
   if (setup) panel.setup = &*setup;
@@ -81,6 +83,8 @@ int runWindow(Model& model, State& state, const ViewerOptions& options) {
     if (const auto m = render::parseViewMode(session.view()); m && *m != views.mode()) views.setMode(*m);
   };
   panel.glInfo = render::glDescription();
+  LayoutDump layout(LayoutDump::pathFromEnvironment());
+  if (layout.enabled()) panel.layout = &layout;
   render::RenderSettings settings;
   settings.samples = options.samples >= 0 ? options.samples : (render::softwareRenderer() ? 0 : 4);
 
@@ -134,10 +138,18 @@ int runWindow(Model& model, State& state, const ViewerOptions& options) {
       continue;
     }
     const double drawStart = wallSeconds();
+    int ww = 0, wh = 0;
+    glfwGetWindowSize(window, &ww, &wh);
+    layout.begin(float(ww), float(wh));
     if (!drawFrame(parts, fbw, fbh, dt, error)) {
       std::fprintf(stderr, "coilsim: %s\n", error.c_str());
       exitCode = 1;
       break;
+    }
+    if (!layout.write(error)) {
+      std::fprintf(stderr, "coilsim: %s\n", error.c_str());
+      layout = LayoutDump("");  // said once; the window goes on
+      panel.layout = nullptr;
     }
     renderer.present(fbw, fbh);
     userView();

@@ -54,6 +54,33 @@ TEST(RenderOffscreen, BiplaneLabelsWithoutPanel) {
   EXPECT_TRUE(testing::matchesGolden(load(o.screenshotPath), "offscreen_biplane"));
 }
 
+// A picture without the panel (plan pictures) keeps its legend in the scene's
+// lower left corner: swatches in the entries' colours, a text-only line.
+TEST(RenderOffscreen, LegendInTheSceneCornerWithoutPanel) {
+  const Model m = testing::helixModel();
+  const State s = makeState(m);
+  ViewerOptions o = helixOptions("3d", "offscreen_legend");
+  o.drawPanel = false;
+  o.width = 480;
+  o.height = 300;
+  o.legend = {{Colour(0.85f, 0.82f, 0.75f, 1), "coil"},
+              {Colour(0.25f, 0.85f, 1.0f, 0.3f), "neck plane (the ostium)"},
+              {Colour(0, 0, 0, 0), "a line without a swatch"}};
+  std::string error;
+  ASSERT_TRUE(renderOffscreen(m, s, o, error)) << error;
+  const render::Image image = load(o.screenshotPath);
+  // The neck swatch is drawn opaque (a translucent swatch would be hard to
+  // read): some pixel in the legend's corner is that cyan.
+  int cyan = 0;
+  for (int y = image.height - 80; y < image.height; ++y)
+    for (int x = 0; x < 60; ++x) {
+      const std::uint8_t* p = image.at(x, y);
+      cyan += p[0] < 90 && p[1] > 190 && p[2] > 230;
+    }
+  EXPECT_GT(cyan, 20);
+  EXPECT_TRUE(testing::matchesGolden(image, "offscreen_legend"));
+}
+
 TEST(RenderOffscreen, UnwritablePathIsNamed) {
   const Model m = testing::straightRodModel();
   const State s = makeState(m);

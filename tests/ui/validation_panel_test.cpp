@@ -121,6 +121,24 @@ TEST(ValidationPanel, WithoutFitTheBaseModelIsShown) {
   EXPECT_EQ(h.red, 0);
 }
 
+// The charts' axes (ticks with values, labels with units) and the legend of
+// the error colour scale the app hands over (golden: the panel's layout).
+TEST(ValidationPanel, ChartsHaveTicksAndUnitsAndTheColourScaleItsLegend) {
+  Recorder rec;
+  ValidationHooks h = hooks(rec);
+  h.errorScale.legend = "node error: fixed log scale, blue <= 0.01 mm, red >= 1 mm";
+  for (int i = 0; i < 8; ++i) h.errorScale.colours.emplace_back(i / 7.0f, 0.3f, 1 - i / 7.0f, 1.0f);
+  h.errorScale.ticks = {{0.0f, "0.01"}, {0.5f, "0.1"}, {1.0f, "1 mm"}};
+  ValidationWindowOptions o = options("validation_panel_axes");
+  o.width = 760;
+  o.height = 720;
+  std::string error;
+  ASSERT_TRUE(renderValidationOffscreen(h, o, error)) << error;
+  render::Image image;
+  ASSERT_TRUE(render::readPng(o.screenshotPath, image, error)) << error;
+  EXPECT_TRUE(testing::matchesGolden(image, "validation_panel_axes"));
+}
+
 TEST(ValidationPanel, UnknownToggleAndFailedFitAreReported) {
   Recorder rec;
   ValidationWindowOptions o = options("validation_panel_bad");
