@@ -34,7 +34,12 @@ double segmentSweep(const RodState& r, int e, double sweep) { return sweep * std
 // or si < sj - 1 in one rod) that can come within `margin` of each other
 // in `sweep` s: their midpoints no farther apart than the reach of the two
 // capsules (half a segment + radius + what the segment sweeps at its
-// velocity) plus `margin` (some farther pairs are visited too). Slow
+// velocity) plus `margin`. Grid pairs farther apart than that, with the
+// radii scaled by max(1, radiusScale), are not visited: two segments are at
+// least their midpoints' distance less their half lengths apart, so such a
+// pair is neither within the margin of touch nor closing within the step
+// (in a packed sac five in six of the 27 cells' segments were such pairs,
+// each measured by closestSegmentSegment for nothing). Slow
 // segments go into a uniform grid with cells as large as the reach of any
 // two of them, O(n) for a coil, not O(n^2); a segment that sweeps more than
 // a quarter of its own size in the step (a tip jolted at the catheter, a
@@ -42,7 +47,8 @@ double segmentSweep(const RodState& r, int e, double sweep) { return sweep * std
 // such segment used to set the cells of all, and in a packed sac a cell
 // three times as wide holds 27 times as many segments.
 template <class Visit>
-void forEachNearPair(const Model& model, const State& state, bool sameRod, double margin, double sweep, Visit visit) {
+void forEachNearPair(const Model& model, const State& state, bool sameRod, double margin, double sweep,
+                     double radiusScale, Visit visit) {
   std::vector<GridSegment>& grid = state.contactScratch.grid;
   std::vector<GridSegment>& fast = state.contactScratch.fast;
   grid.clear();
@@ -63,7 +69,7 @@ void forEachNearPair(const Model& model, const State& state, bool sameRod, doubl
       else reach = std::max(reach, segmentSize(r, e) + swept);
     }
   }
-  const double cell = 2 * reach + margin;
+  const double cell = 2 * reach + margin, scale = std::max(1.0, radiusScale);
   if (!(cell > 0) || !std::isfinite(cell)) return;  // no rod takes part (or positions are not finite)
   const auto isFast = [&](int k, int e) {
     return std::binary_search(fast.begin(), fast.end(), GridSegment{0, k, e}, [](const GridSegment& a, const GridSegment& b) {
@@ -100,8 +106,10 @@ void forEachNearPair(const Model& model, const State& state, bool sameRod, doubl
     if (!takesPart(r)) continue;
     for (int e = 0; e + 1 < r.activeNodes; ++e) {
       if (!fast.empty() && isFast(int(k), e)) continue;
-      const Vec3 m = 0.5 * (r.x[e] + r.x[e + 1]) / cell;
-      grid.push_back({cellKey(cellIndex(m.x()), cellIndex(m.y()), cellIndex(m.z())), int(k), e});
+      const Vec3 mid = 0.5 * (r.x[e] + r.x[e + 1]), m = mid / cell;
+      const double extent = segmentSize(r, e) + (scale - 1) * std::max(r.nodes[e].radius, r.nodes[e + 1].radius) +
+                            segmentSweep(r, e, sweep);
+      grid.push_back({cellKey(cellIndex(m.x()), cellIndex(m.y()), cellIndex(m.z())), int(k), e, mid, extent});
     }
   }
   std::sort(grid.begin(), grid.end(), [](const GridSegment& a, const GridSegment& b) { return a.cell < b.cell; });
@@ -135,6 +143,8 @@ void forEachNearPair(const Model& model, const State& state, bool sameRod, doubl
           if (sameRod != (gj.rod == gi.rod)) continue;
           if (sameRod && gj.segment - gi.segment <= 1) continue;
           if (model.rods[gi.rod].role == RodRole::Catheter && model.rods[gj.rod].role == RodRole::Catheter) continue;
+          const double apart = gi.extent + gj.extent + margin;
+          if ((gj.mid - gi.mid).squaredNorm() > apart * apart) continue;
           visit(gi.rod, gi.segment, gj.rod, gj.segment);
         }
     }
@@ -171,7 +181,7 @@ void detectRodContacts(const Model& model, State& state, double h, bool sameRod,
   }
   // The reach includes what a segment sweeps in the step at its start
   // velocity, so a pair that would meet within the step is found (response.h).
-  forEachNearPair(model, state, sameRod, margin, h, [&](int ki, int si, int kj, int sj) {
+  forEachNearPair(model, state, sameRod, margin, h, law.radiusScale, [&](int ki, int si, int kj, int sj) {
     const RodState &ri = state.rods[ki], &rj = state.rods[kj];
     const Vec3 &a0 = ri.x[si], &a1 = ri.x[si + 1], &b0 = rj.x[sj], &b1 = rj.x[sj + 1];
     const double ra = segmentRadius(ri, si), rb = segmentRadius(rj, sj);
@@ -267,7 +277,7 @@ std::string checkRodContacts(const Model& model, const State& state, bool sameRo
              std::to_string(sj) + " within the step, outside its contacts";
   };
   if (scan) {
-    forEachNearPair(model, state, sameRod, 0.0, 0.0, check);
+    forEachNearPair(model, state, sameRod, 0.0, 0.0, radiusScale, check);
   } else {
     // Only the pairs found at the start but not touching nor closing can have been missed.
     for (size_t k = 0; k < state.rods.size(); ++k) {

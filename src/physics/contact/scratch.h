@@ -16,6 +16,8 @@ namespace coilsim {
 struct GridSegment {
   std::uint64_t cell = 0;
   int rod = 0, segment = 0;
+  Vec3 mid = Vec3::Zero();  // midpoint, m
+  double extent = 0;        // half the length + the scaled contact radius + what it sweeps, m
 };
 
 struct ContactScratch {
