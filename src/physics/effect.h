@@ -81,10 +81,13 @@ struct FitSpec {
 
 // How an effect takes part in validation: as a candidate missing effect
 // (`fit` non-empty, or a parameterless switch), with values implied by the
-// setup, and whether it releases the rigid clamp at the tip.
+// setup, values it is held at whenever the workbench switches it on (a
+// model fitted to measurements must not depend on them: see
+// self_contact), and whether it releases the rigid clamp at the tip.
 struct Diagnosable {
   std::vector<FitSpec> fit;
   std::vector<std::pair<std::string_view, double>> fromSetup;  // parameter, SI value the setup implies
+  std::vector<std::pair<std::string_view, double>> held;       // parameter, SI value in every validation model
   bool releasesClamp = false;
 };
 

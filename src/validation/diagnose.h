@@ -42,6 +42,7 @@ struct Candidate {
   std::string effect;
   std::vector<std::string> params;   // "effect.param"
   std::vector<double> offValue, typicalValue;  // SI, one per param
+  std::vector<std::pair<std::string, double>> held;  // "param", SI: set when it is switched on (Diagnosable::held)
 };
 
 // The candidates the workbench knows for measurement `m` (buoyancy, drag,

@@ -88,16 +88,32 @@ Eigen::MatrixXd jointJacobian(const std::vector<FitMember>& members, const std::
   for (size_t k = 0; k < params.size(); ++k) {
     const FitParam& f = params[k];
     const double v = getParam(ps[0], f.name);
-    // A step of 1e-3 of the variable's scale, kept inside the bounds.
+    auto column = [&](double h, Eigen::VectorXd& col) {
+      const double up = std::min(v + h, f.hi), down = std::max(v - h, f.lo);
+      std::vector<ModelParams> a = ps, b = ps;
+      for (auto& x : a) setParam(x, f.name, up);
+      for (auto& x : b) setParam(x, f.name, down);
+      const Eigen::VectorXd ra = stacked(members, a, true), rb = stacked(members, b, true);
+      if (ra.size() != rb.size()) return false;
+      col = (ra - rb) / (up - down);
+      return true;
+    };
+    // A step of 1e-3 of the variable's scale, kept inside the bounds; where
+    // the residual is not smooth at that scale (contacts that switch, as
+    // loops land on one another in a dynamic stage), the difference across
+    // a jump is not a derivative and would make sigma tiny, so the step
+    // grows tenfold (up to 1e-1) until two successive steps agree to 10 %.
     double h = f.logScale ? 1e-3 * v : 1e-3 * (f.hi - f.lo);
-    const double up = std::min(v + h, f.hi), down = std::max(v - h, f.lo);
-    std::vector<ModelParams> a = ps, b = ps;
-    for (auto& x : a) setParam(x, f.name, up);
-    for (auto& x : b) setParam(x, f.name, down);
-    const Eigen::VectorXd ra = stacked(members, a, true), rb = stacked(members, b, true);
-    if (J.size() == 0) J.resize(ra.size(), Eigen::Index(params.size()));
-    if (ra.size() != J.rows() || rb.size() != J.rows()) return {};
-    J.col(Eigen::Index(k)) = (ra - rb) / (up - down);
+    Eigen::VectorXd col, wider;
+    if (!column(h, col)) return {};
+    for (int grow = 0; grow < 2; ++grow) {
+      if (!column(10 * h, wider) || wider.size() != col.size()) return {};
+      if ((wider - col).norm() <= 0.1 * wider.norm()) break;
+      col = wider, h *= 10;
+    }
+    if (J.size() == 0) J.resize(col.size(), Eigen::Index(params.size()));
+    if (col.size() != J.rows()) return {};
+    J.col(Eigen::Index(k)) = col;
   }
   return J;
 }

@@ -100,8 +100,10 @@ SetupHint setupHint(const Measurement& m) { return {m.mediumDensity, m.mediumVis
 
 EffectUse effectFromFile(const std::string& name, const Measurement& m) {
   EffectUse u = EffectRegistry::global().use(name);
-  if (const std::optional<Diagnosable> d = u.effect->diagnosis(setupHint(m)))
+  if (const std::optional<Diagnosable> d = u.effect->diagnosis(setupHint(m))) {
+    for (const auto& [param, value] : d->held) u.set(param, value);
     for (const auto& [param, value] : d->fromSetup) u.set(param, value);
+  }
   return u;
 }
 

@@ -50,7 +50,8 @@ SetupHint setupHint(const Measurement& m);
 
 // The effect `name` switched on with the values the measurement implies
 // (Diagnosable::fromSetup: buoyancy the medium's density, drag its
-// viscosity), otherwise its defaults. Throws std::invalid_argument naming
+// viscosity) and those it is held at in validation (Diagnosable::held),
+// otherwise its defaults. Throws std::invalid_argument naming
 // an unknown effect and listing the known ones.
 EffectUse effectFromFile(const std::string& name, const Measurement& m);
 

@@ -167,17 +167,17 @@ std::vector<Scenario> referenceScenarios() {
     v.push_back(s);
   }
   {
-    Scenario s = coil("two-effects", 100, 0.15, 7, 8, true, 7.0, 5.7);
+    Scenario s = coil("two-effects", 100, 0.1, 7, 8, true, 7.0, 5.7);
     s.seed = 71;
-    s.tiltADeg = -3.0, s.tiltBDeg = 1.5;
+    s.tiltADeg = -4.0, s.tiltBDeg = 2.0;
     s.tube = {12, 0.65, 0.42, 1.2, 0.4, 1.15, 24};
     s.description = std::string(kMadeBy) +
-                    "Two hidden effects at once (air): the bench is tilted by 3.4 deg, and the declared catheter_tip "
+                    "Two hidden effects at once (air): the bench is tilted by 4.5 deg, and the declared catheter_tip "
                     "is the rest end of a 12 mm free polymer tube that carries the coil and sags. Hidden: gravity "
                     "tilt and catheter compliance.";
     s.stages = {stat("stage 1", 30, 0.05, 28), stat("stage 2", 60, 0.05, 44), stat("stage 3", 90, 0.05, 58)};
     s.hidden = {"gravity_tilt", "catheter_compliance"};
-    s.trueModel = "True model: gravity turned by a = -3.0 deg, b = 1.5 deg (gravity_tilt convention); a 12 mm free "
+    s.trueModel = "True model: gravity turned by a = -4.0 deg, b = 2.0 deg (gravity_tilt convention); a 12 mm free "
                   "tube (OD 0.65, ID 0.42 mm, E 1.2 GPa, 1.15 g/cm3) clamped 12 mm behind the declared tip carrying "
                   "the coil (composite EI in the truth file, catheter_compliance segment_length_mm 12); the true E.";
     v.push_back(s);

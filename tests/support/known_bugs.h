@@ -160,26 +160,41 @@ inline constexpr KnownBug kStaticSelfContactDiverges{
     "known bug: solveStatic does not converge once loops of one coil press on each other (self_contact); "
     "see tests/support/known_bugs.h"};
 
-// The validation workbench cannot use dynamic stages in which loops land
-// on one another. On coilsim's own dynamic bench (loops pushed out at
-// 50 mm/s falling onto each other) the refit with self_contact stalled (E
-// 6.85 +- 0.0006 GPa for 5.6: a finite-difference Jacobian across contacts
-// switching), and after the static solver's rework the same data, an
-// identical start up to round-off, ranked drag first: the stages are
-// chaotic. That synthetic test, which only ever skipped, is gone. On the
-// independent reference file tests/data/reference/self-contact-dynamic.json
-// (pitch = wire diameter, a 60 mm/s push, water) the free E goes to 5.2x
-// its nominal, which the prior check reports, but no candidate is
-// significant: refitted with self_contact and E held to its band, the
-// static stages fall to 0.0033 / 0.0021 and the dynamic one rises to 0.0111
-// (true model 0.0025 / 0.0017 / 0.0016). ReferenceFiles.
-// SelfContactDynamicIsNotCalledExplained checks that the workbench does not
-// call such data explained. A fit that can follow them needs an ensemble of
-// perturbed starts, or statistics of the shape instead of the nodes.
+// Fixed: the validation workbench could not use dynamic stages in which
+// loops land on one another. On tests/data/reference/self-contact-dynamic
+// (pitch = wire diameter, a 60 mm/s push in water) no candidate was
+// significant: refitted with self_contact, the static stages fell to 0.0033
+// / 0.0021 and the dynamic one rose to 0.0111 (true model 0.0025 / 0.0017 /
+// 0.0016). At the truth (true E, water's buoyancy and drag) coilsim's
+// dynamic stage reached 0.0322: (1) the effect's default Coulomb friction
+// (0.15 / 0.1) acted in the dynamic stage while the static ones are solved
+// frictionless (frictionless: 0.0052); (2) the 50 N/mm penalty at the 1 ms
+// step gave another answer than shorter steps (0.0031 at 0.5 ms, 0.0022 at
+// 0.25 ms), where 1-5 N/mm at 1 ms gives 0.0021; (3) the candidate's refit
+// started from E at the band's edge (10.8 GPa), where the regularised
+// baseline had held the 27.9 GPa the free fit absorbed, and stayed there;
+// (4) sigma came from a 1e-3 finite difference across contacts switching
+// (E +- 0.0015 GPa). Now the workbench holds self_contact frictionless at
+// 5 N/mm (Diagnosable::held), refits start implausible values from their
+// nominal, and the Jacobian's step grows until it is a derivative: it is
+// found first (80 %), every stage within 1.5x of the true model.
 inline constexpr KnownBug kRefitStallsWithContacts{
-    true,
+    false,
     "known bug: dynamic stages in which loops land on one another are chaotic and the validation fit cannot "
     "follow them; see tests/support/known_bugs.h"};
+
+// On self-contact-dynamic the refit with self_contact fits E = 5.98 +- 0.23
+// GPa for a true 6.8 (12 %, 3.6 sigma), with every stage at the true
+// model's error: E is weakly seen there (between 5.6 and 7.6 GPa the static
+// stages' errors change by at most 0.0003, and the dynamic stage's error jumps by
+// up to 0.0015 between neighbouring values as landings switch), and the two
+// contact laws differ (the reference's cubic penalty lets loops sink about
+// 0.01 mm into each other). ReferenceFiles.SelfContactDynamic checks the
+// rest and that E comes back from the band's edge; not E itself.
+inline constexpr KnownBug kSelfContactDynamicBiasesE{
+    true,
+    "known bug: on a dynamic stage with loops landing on one another the refit with self_contact recovers the "
+    "shape but not E (12 % low, 3.6 sigma); see tests/support/known_bugs.h"};
 
 // Fixed: wall penetration during a deployment, not only at its end. The
 // scene runs record the deepest wall penetration of the wire at every

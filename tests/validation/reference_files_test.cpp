@@ -101,8 +101,11 @@ void print(const std::string& name, const Diagnosis& d, const std::vector<double
 
 // The checks of the issue for a file whose hidden effects are `expected`,
 // in order; forward selection may name nothing outside `hidden`.
+// `recoversE` false: the one criterion not met on that file (E), stated
+// where it is called; E must then at least come back from the regularised
+// baseline towards the truth.
 void checkHidden(const std::string& name, const std::vector<std::string>& expected,
-                 const std::vector<std::string>& hidden = {}, bool predict = true) {
+                 const std::vector<std::string>& hidden = {}, bool predict = true, bool recoversE = true) {
   const auto r = diagnoseFile(name, predict);
   const Diagnosis& d = r->d;
   ASSERT_TRUE(d.ok) << d.message;
@@ -126,6 +129,10 @@ void checkHidden(const std::string& name, const std::vector<std::string>& expect
   const FittedValue& E = d.selected.back().result.fit.fitted[0];
   ASSERT_EQ(E.name, "young_modulus");
   const double trueE = scenario(name).trueYoungGpa * 1e9;
+  if (!recoversE) {
+    EXPECT_LT(std::abs(E.value - trueE), std::abs(d.regularisedBaseline.fitted[0].value - trueE));
+    return;
+  }
   EXPECT_LE(std::abs(E.value - trueE), std::max(0.05 * trueE, 3 * E.sigma))
       << name << ": E " << E.value / 1e9 << " +- " << E.sigma / 1e9 << " GPa, true " << trueE / 1e9;
 }
@@ -156,35 +163,22 @@ TEST(ReferenceFiles, CatheterTip) { checkHidden("catheter-tip", {"catheter_compl
 TEST(ReferenceFiles, SelfContactStatic) {
   checkHidden("self-contact-static", {"self_contact"}, {}, false);
 }
-// The tube first (it moves the coil by up to 0.96 mm); the 3.4 deg tilt,
-// once the tube is in the model, moves coilsim's coil by at most 0.004 /
-// 0.013 / 0.093 mm in the three stages (measured at the truth: the stiff
-// 0.15 mm wire barely sags sideways), at the 0.05 mm noise, so the
-// stopping rule may or may not take it second; it must take nothing else.
-TEST(ReferenceFiles, TwoEffects) {
-  checkHidden("two-effects", {"catheter_compliance"}, {"gravity_tilt"});
-}
+// Both, in order: the tube first, then the 4.5 deg tilt on top of it (on
+// the 0.1 mm wire the tilt's sideways sag stays above the noise once the
+// tube is in the model; docs/validation.md, "Two effects at once").
+TEST(ReferenceFiles, TwoEffects) { checkHidden("two-effects", {"catheter_compliance", "gravity_tilt"}); }
 // Drag and the 6 % upthrust of the glycerol-like medium: drag is found;
 // the upthrust is a weight change E absorbs in one file.
 TEST(ReferenceFiles, Drag) { checkHidden("drag", {"drag"}, {"buoyancy"}, false); }
-// Not found (kRefitStallsWithContacts, tests/support/known_bugs.h): loops
-// landing on one another in a dynamic stage. What the workbench must still
-// say: the free E is implausible (5.2x its nominal: evidence that something
-// is missing), and the model is not adequate, rather than "explained".
-TEST(ReferenceFiles, SelfContactDynamicIsNotCalledExplained) {
-  const std::string name = "self-contact-dynamic";
-  const Measurement m = io::readMeasurement(kDir + name + ".json");
-  StageSimulator sim(m);
-  const Comparison cmp(m);
-  DiagnoseOptions o;
-  o.candidates = {candidateFor("self_contact", m)};
-  o.refitTop = 1;
-  o.predict = false;
-  const Diagnosis d = diagnose(sim, cmp, ModelParams::nominal(m), o);
-  ASSERT_TRUE(d.ok) << d.message;
-  print(name, d, {});
-  EXPECT_EQ(d.implausible, std::vector<std::string>{"young_modulus"}) << d.priorVerdict;
-  EXPECT_FALSE(d.adequacy.explained) << d.adequacy.verdict;
+// Loops landing on one another in a push captured 0.05 s after it stops,
+// in water: self_contact first and significant (the workbench's contact
+// held frictionless at 5 N/mm, Diagnosable::held), every stage within 1.5x
+// of the true model; water's upthrust and drag may follow. NOT met: E
+// (5.98 +- 0.23 GPa for 6.8, 3.6 sigma; kSelfContactDynamicBiasesE in
+// tests/support/known_bugs.h), checked only to come back from the band's
+// edge (10.8 GPa) that the regularised baseline held it at.
+TEST(ReferenceFiles, SelfContactDynamic) {
+  checkHidden("self-contact-dynamic", {"self_contact"}, {"buoyancy", "drag"}, false, false);
 }
 
 // Water alone: buoyancy is a 4.7 % weight change that E absorbs exactly in

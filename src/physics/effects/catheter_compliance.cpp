@@ -94,6 +94,7 @@ class CatheterCompliance final : public Effect {
     return Diagnosable{{{kParams[kBending].name, 1e6 * 1e-6, 10.0 * 1e-6, 0.5e-6, 100e-6},
                         {kParams[kLength].name, 5e-3, 10e-3, 2e-3, 40e-3}},
                        {},
+                       {},
                        true};
   }
 };
