@@ -23,7 +23,7 @@ const std::string kCase = std::string(COILSIM_SOURCE_DIR) + "/scenes/cases/spher
 
 TEST(WallLoadFigure, PlanPracticeAndWindowReportTheSameLoadForOneRun) {
   const PracticeCase pc = loadCase(kCase);
-  const std::string coil = "finishing-3x40";
+  const std::string coil = "finishing-2x20";  // short, so three runs of it stay a small test
   // The plan's operator on the practice model (the same contacts: addRunContacts).
   const PracticeSession start(pc, coil);
   Model model = start.model();
