@@ -45,9 +45,6 @@ class WindowScorer : public ui::RunObserver {
     const planning::ScoreSheet& s = scorer_->running();
     return {{"session time", fmt("%.1f s", scorer_->time()), false},
             {"fluoroscopy time", fmt("%.1f s", s.fluoroscopyTime), false},
-            // What the score sheet will say: loads lasting 5 steps (the lines above show every step's).
-            {"largest lasting wall load", s.wallForcesAvailable ? fmt("%.2f mN", 1e3 * s.maxWallForce) : "n/a",
-             s.wallForcesAvailable && s.maxWallForce > pc_.goal.maxWallForce},
             {"repositionings", std::to_string(s.repositionings), false},
             {"recording", outputs_->record.empty() ? std::string("off (--record SESSION)") : outputs_->record, false}};
   }

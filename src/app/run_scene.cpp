@@ -19,10 +19,11 @@
 #include "physics/integrator.h"
 #include "physics/model.h"
 #include "physics/state.h"
+#include "planning/case_file.h"
+#include "planning/live_readouts.h"
 
 #ifdef COILSIM_HAVE_UI
 #include "app/window_setup.h"
-#include "planning/case_file.h"
 #include "ui/viewer.h"
 #endif
 
@@ -181,6 +182,35 @@ Outcome simulateStatic(const Model& model, State& state, const io::SceneSpec& sp
   return {false, false, line};
 }
 
+// The clinical read-outs of a deployment into a phantom's sac (the lines the
+// window's panel shows, computed by the same planning::LiveReadouts): printed
+// and kept for result.json. Nothing when no obstacle is a phantom with a sac.
+void readSac(const io::SceneSpec& spec, const Model& model, const State& state, io::RunRecord& record) {
+  if (!model.device) return;
+  std::string note;
+  const std::optional<planning::Sac> sac = planning::sceneSac(spec, note);
+  if (!sac) return;
+  planning::LiveReadouts live(*sac, *model.device, planning::Goal{}.maxWallForce);
+  live.interval = 0;
+  std::printf("read-outs (%s):\n", note.c_str());
+  for (const planning::LiveLine& l : live.lines(model, state))
+    std::printf("  %s%s: %s\n", l.warning ? "! " : "", l.label.c_str(), l.value.c_str());
+  const planning::SacMetrics& m = live.metrics();
+  io::ClinicalReadouts r;
+  r.packingDensity = m.packingDensity;
+  r.coilLengthInSac = m.coilLengthInSac;
+  r.coilVolume = m.coilVolume;
+  r.sacVolume = m.sacVolume;
+  r.neckCoverage = m.neckCoverage;
+  r.protruding = m.protruding;
+  r.protrudingLength = m.protrudingLength;
+  r.wallLoadAvailable = live.wallLoadAvailable();
+  r.wallLoad = live.wallLoadNow();
+  r.largestWallLoad = live.wallLoadMax();
+  r.wallLoadWindow = kWallLoadWindow;
+  record.readouts = r;
+}
+
 // Writes --out; false (after saying why) if it cannot.
 bool writeOut(const RunOptions& o, const Model& model, const State& state, const io::RunRecord& record) {
   if (o.out.empty()) return true;
@@ -286,6 +316,7 @@ int run(const RunOptions& o) {
       r = simulateDynamic(model, state, steps, record, o.scene);
   }
   std::printf("%s: %s\n", o.scene.c_str(), r.summary.c_str());
+  readSac(spec, model, state, record);
   std::fflush(stdout);
   if (!r.ok) std::fprintf(stderr, "coilsim: %s: %s\n", o.scene.c_str(), record.error.c_str());
   if (!writeOut(o, model, state, record)) return kExitUsage;

@@ -99,6 +99,22 @@ nlohmann::ordered_json resultJson(const Model& model, const State& state, const 
     out["static"] = {{"converged", run.statics->converged},
                      {"increments", run.statics->increments},
                      {"iterations", run.statics->iterations}};
+  if (run.readouts) {
+    const ClinicalReadouts& c = *run.readouts;
+    ordered_json r;
+    r["packing_percent"] = 100 * c.packingDensity;
+    r["coil_in_sac_mm"] = units::mToMm(c.coilLengthInSac);
+    r["coil_volume_mm3"] = units::mToMm(units::mToMm(units::mToMm(c.coilVolume)));
+    r["sac_volume_mm3"] = units::mToMm(units::mToMm(units::mToMm(c.sacVolume)));
+    r["neck_coverage_percent"] = 100 * c.neckCoverage;
+    r["protruding"] = c.protruding;
+    r["protruding_length_mm"] = units::mToMm(c.protrudingLength);
+    r["wall_load_window_ms"] = 1e3 * c.wallLoadWindow;
+    // Without wall contact the load is unknown, not zero.
+    r["wall_load_mN"] = c.wallLoadAvailable ? ordered_json(1e3 * c.wallLoad) : ordered_json(nullptr);
+    r["largest_wall_load_mN"] = c.wallLoadAvailable ? ordered_json(1e3 * c.largestWallLoad) : ordered_json(nullptr);
+    out["readouts"] = std::move(r);
+  }
   ordered_json warnings = ordered_json::array();
   for (const std::string& w : run.warnings) warnings.push_back(w);
   for (const std::string& w : state.warnings) warnings.push_back(w);

@@ -240,6 +240,7 @@ StepReport step(const Model& model, State& state) {
   }
   if (report.ok()) state.time += model.timeStep;
   recordWallPenetration(model, state);
+  if (report.ok()) recordWallLoad(model, state);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   StepStats& s = state.stats;
   ++s.steps;

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "physics/contact/clearance.h"
+#include "physics/contact/detect.h"
 #include "physics/deployment.h"
 
 namespace coilsim {
@@ -92,10 +94,25 @@ void moveDevice(const Model& model, State& state) {
   }
   double deployed = ds.deployed, twist = ds.twist;
   if (m.retractRate != 0) {
-    const double d = advanceBy(m.retractRate, m.retractLeft, dt);
-    setTipOffset(model, state, ds.tipOffset + d);
-    deployed += d;  // the pusher holds the coil: it is unsheathed as the catheter goes back
-    if (m.retractLeft == 0) m.retractRate = 0;
+    // The catheter holds the coil's tip node by prescription, so no contact
+    // can stop it: a retraction that would carry the tip into a wall's skin
+    // (a closed phantom whose catheter path leaves through its wall) stops
+    // at the wall instead (docs/contact.md, "The soak's penetration").
+    const RodState& chain = state.rods[size_t(dep.chainRod)];
+    const double keep = (1 + kWallSkin) * chain.nodes[size_t(dep.tipNode)].radius;
+    const double step = std::abs(m.retractRate) * dt;
+    const Vec3 tipNow = ds.tipStart - ds.tipOffset * dep.retractDirection;
+    const double before = wallClearance(model, tipNow, keep + 2 * step);
+    const double after = wallClearance(model, tipNow - step * dep.retractDirection, keep + 2 * step);
+    if (after < keep && after < before) {
+      m.retractRate = 0, m.retractLeft = 0;
+      notes.push_back("the catheter tip is at the wall: retraction stopped");
+    } else {
+      const double d = advanceBy(m.retractRate, m.retractLeft, dt);
+      setTipOffset(model, state, ds.tipOffset + d);
+      deployed += d;  // the pusher holds the coil: it is unsheathed as the catheter goes back
+      if (m.retractLeft == 0) m.retractRate = 0;
+    }
   }
   if (m.pushRate != 0) {
     deployed += advanceBy(m.pushRate, m.pushLeft, dt);

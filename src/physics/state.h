@@ -8,6 +8,7 @@
 #include "physics/block_tridiagonal.h"
 #include "physics/contact/contact_state.h"
 #include "physics/contact/scratch.h"
+#include "physics/contact/wall_load.h"
 #include "physics/model.h"
 #include "physics/math.h"
 
@@ -68,6 +69,8 @@ struct StepStats {
   // detection), in m and as a fraction of the wire radius there; a penalty
   // too soft for the coil shows here (dynamics.cpp warns once past 10 %).
   double maxWallPenetration = 0, maxWallPenetrationOfRadius = 0;
+  // The sustained wall load (physics/contact/wall_load.h), updated after every step taken.
+  WallLoad wallLoad;
 };
 
 struct State {

@@ -26,13 +26,15 @@ class LiveReadouts {
   LiveReadouts(const Sac& sac, const Deployment& dep, double wallForceLimit);
   // The lines for this state. The sac metrics are recomputed at most every
   // `interval` s of simulated time (they walk every segment); the wall load
-  // every call.
+  // is the State's, kept step by step.
   std::vector<LiveLine> lines(const Model& model, const State& state);
   double interval = 0.05;  // s
 
   const SacMetrics& metrics() const { return metrics_; }
-  double wallLoadNow() const { return wallNow_; }    // N, largest node wall force this step
-  double wallLoadMax() const { return wallMax_; }    // N, largest so far
+  bool wallLoadAvailable() const { return wallAvailable_; }
+  // N, the sustained wall load now and its largest so far (State::stats.wallLoad, physics/contact/wall_load.h)
+  double wallLoadNow() const { return wallNow_; }
+  double wallLoadMax() const { return wallMax_; }
 
  private:
   Sac sac_;

@@ -158,27 +158,18 @@ std::string occlusionClassName(int cls) {
   }
 }
 
-void WallForceStats::add(const std::vector<std::vector<double>>& nodeForces, double dt, double threshold) {
-  double stepMax = 0;
+void WallForceStats::add(const State& state, const std::vector<std::vector<double>>& nodeForces, double dt,
+                         double threshold) {
   for (const auto& rod : nodeForces)
     for (const double m : rod) {
       if (m <= 0) continue;
-      stepMax = std::max(stepMax, m);
       sum += m;
       ++samples;
     }
-  peak = std::max(peak, stepMax);
-  const size_t k = size_t(std::max(1, sustainSteps));
-  if (recent_.size() < k) {
-    recent_.push_back(stepMax);
-    if (recent_.size() < k) return;
-  } else {
-    recent_[next_] = stepMax;
-    next_ = (next_ + 1) % k;
-  }
-  const double sustained = *std::min_element(recent_.begin(), recent_.end());
-  max = std::max(max, sustained);
-  if (sustained > threshold) timeAbove += dt;
+  const WallLoad& load = state.stats.wallLoad;
+  max = std::max(max, load.max);
+  peak = std::max(peak, load.peak);
+  if (load.now > threshold) timeAbove += dt;
 }
 
 }  // namespace coilsim::planning

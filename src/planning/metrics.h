@@ -73,27 +73,22 @@ SacMetrics measureSac(const Sac& sac, double sacVolume, const NeckGrid& neck, co
 int occlusionClass(double packingDensity, double neckCoverage);
 std::string occlusionClassName(int cls);
 
-// Running statistics of per-node wall (contact) force magnitudes over time.
-// A wall load counts when it lasts: the penalty contact can chatter at a
-// light node (the coil's distal tip) with a force that is there one step in
-// two to four; a vessel wall feels the load that persists. So `max` and
-// `timeAbove` use the largest node force that every one of the last
-// `sustainSteps` steps reached (the sustained load); `peak` keeps the
-// largest single-step value for reference.
+// A run's wall load over time. The figure shown everywhere is the
+// sustained load of the contact layer (physics/contact/wall_load.h: the
+// largest node force the wall carried at every step of the last 5 ms),
+// which the State keeps; this adds what a plan also tabulates: the mean
+// force of the contacting nodes and the time the sustained load spent above
+// a safety threshold.
 struct WallForceStats {
-  int sustainSteps = 5;   // steps (5 ms at the usual 1 ms step) a load must last
-  double max = 0;         // N, largest sustained load
-  double peak = 0;        // N, largest node force in any single step
+  double max = 0;         // N, largest sustained load (WallLoad::max)
+  double peak = 0;        // N, largest node force in any single step (penalty spikes included)
   double sum = 0;         // N, summed over samples of contacting nodes
   long samples = 0;       // contacting node samples
   double timeAbove = 0;   // s with the sustained load above the threshold
   double mean() const { return samples ? sum / double(samples) : 0.0; }
-  // Adds one step's per-node force magnitudes (nodes with f > 0 are in contact).
-  void add(const std::vector<std::vector<double>>& nodeForces, double dt, double threshold);
-
- private:
-  std::vector<double> recent_;  // the largest node force of each of the last sustainSteps steps
-  size_t next_ = 0;
+  // After a step taken: the state's sustained load (state.stats.wallLoad),
+  // and the step's per-node force magnitudes (nodes with f > 0 are in contact) for the mean.
+  void add(const State& state, const std::vector<std::vector<double>>& nodeForces, double dt, double threshold);
 };
 
 }  // namespace coilsim::planning

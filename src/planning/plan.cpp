@@ -224,16 +224,18 @@ ordered_json planJson(const PlanSetup& setup, const std::vector<CandidateResult>
     c["placed"] = r.ok && r.deploy.placed;
     if (!r.deploy.notPlaced.empty()) c["not_placed"] = r.deploy.notPlaced;
     c["deployed_mm"] = round6(mm(r.deploy.deployed));
-    c["packing_density"] = round6(r.sac.packingDensity);
+    c["packing_percent"] = round6(100 * r.sac.packingDensity);
     c["sac_volume_mm3"] = round6(mm3(r.sac.sacVolume));
     c["coil_volume_mm3"] = round6(mm3(r.sac.coilVolume));
     c["coil_length_in_sac_mm"] = round6(mm(r.sac.coilLengthInSac));
-    c["neck_coverage"] = round6(r.sac.neckCoverage);
+    c["neck_coverage_percent"] = round6(100 * r.sac.neckCoverage);
     c["protruding"] = r.sac.protruding;
     c["protruding_length_mm"] = round6(mm(r.sac.protrudingLength));
     // Without a contact effect there is no wall force to report: null, not 0.
     if (r.deploy.wallForcesAvailable) {
+      // The sustained load (physics/contact/wall_load.h), as the window and the score sheet show it.
       c["max_wall_force_mN"] = round6(milliNewton(r.deploy.wall.max));
+      c["wall_load_window_ms"] = kWallLoadWindow * 1e3;
       c["mean_wall_force_mN"] = round6(milliNewton(r.deploy.wall.mean()));
       c["peak_wall_force_mN"] = round6(milliNewton(r.deploy.wall.peak));
       c["time_above_safety_s"] = round6(r.deploy.wall.timeAbove);
@@ -279,7 +281,7 @@ std::string sensitivityMarkdown(const ordered_json& plan) {
     ++s.runs;
     if (c.value("ok", false) && c.value("placed", true)) ++s.placed;
     if (c.value("protruding", false)) ++s.protruding;
-    const double p = c.value("packing_density", 0.0);
+    const double p = c.value("packing_percent", 0.0);
     s.lo = std::min(s.lo, p), s.hi = std::max(s.hi, p);
     if (c.contains("max_wall_force_mN") && c["max_wall_force_mN"].is_number())
       s.wallHi = std::max(s.wallHi, c["max_wall_force_mN"].get<double>());
@@ -291,7 +293,7 @@ std::string sensitivityMarkdown(const ordered_json& plan) {
   for (const auto& [name, s] : coils) {
     if (s.runs < 2) continue;
     std::snprintf(buf, sizeof buf, "| %s | %d | %d of %d | %.1f - %.1f %% | %d of %d | %.3g |\n", name.c_str(), s.runs,
-                  s.placed, s.runs, 100 * s.lo, 100 * s.hi, s.protruding, s.runs, s.wallHi);
+                  s.placed, s.runs, s.lo, s.hi, s.protruding, s.runs, s.wallHi);
     md += buf;
   }
   md += "\nA robust choice keeps its packing, protrusion and placement over the variants.\n";
@@ -321,8 +323,8 @@ std::string planMarkdown(const ordered_json& plan) {
     const bool ok = c.value("ok", false), placed = c.value("placed", ok);
     const std::string placedText = !ok ? "failed" : placed ? "yes" : "no";
     std::snprintf(buf, sizeof buf, "| %s | %s | %s | %.1f %% | %.2f | %.0f %% | %s | %s | %s | %.3g | %.3g | %d / %d | %s |\n",
-                  name.c_str(), variant.c_str(), placedText.c_str(), 100 * c.value("packing_density", 0.0),
-                  c.value("coil_volume_mm3", 0.0), 100 * c.value("neck_coverage", 0.0),
+                  name.c_str(), variant.c_str(), placedText.c_str(), c.value("packing_percent", 0.0),
+                  c.value("coil_volume_mm3", 0.0), c.value("neck_coverage_percent", 0.0),
                   c.value("protruding", false) ? "yes" : "no", number(c["max_wall_force_mN"], "%.3g").c_str(),
                   number(c["mean_wall_force_mN"], "%.3g").c_str(), c.value("kickback_mm", 0.0),
                   c.value("max_deployment_force_mN", 0.0), c.value("corrections", 0), c.value("pull_backs", 0),

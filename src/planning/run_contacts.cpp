@@ -21,12 +21,6 @@ void addRunContacts(ModelDef& def, const Sac& sac) {
         std::any_of(def.effects.begin(), def.effects.end(), [&](const EffectUse& e) { return e.name() == name; });
     if (listed) continue;
     EffectUse use = EffectRegistry::global().use(name);
-    // A softer wall than the registered default: the loads on an aneurysm
-    // wall are millinewtons, so 5 N/mm per mm of rod still keeps the
-    // penetration near a micrometre, and the coil's light distal node no
-    // longer chatters against the wall as it does at 50 (forces of up to
-    // newtons one step in four, seen in plans of finishing-3x40).
-    if (use.name() == "wall_contact") use.set("stiffness_n_mm2", kRunWallStiffness);
     def.effects.push_back(std::move(use));
   }
 }

@@ -15,13 +15,12 @@ namespace coilsim::planning {
 // The contact effects a run switches on when its scene does not name them.
 inline constexpr const char* kRunContactEffects[] = {"wall_contact", "self_contact", "rod_contact"};
 
-// Wall penalty stiffness of runs whose scene does not set one, SI (N/m per m of rod = 5 N/mm2).
-inline constexpr double kRunWallStiffness = 5e6;
-
 // Adds the sac surface as a wall obstacle unless the scene already has a
 // wall that takes part in contact (a phantom or patient mesh listed under
 // "obstacles"), and each of kRunContactEffects the scene does not list, at
-// its registered defaults (wall_contact with kRunWallStiffness). An effect the scene lists, even switched off,
+// its registered defaults: the same contact law and parameters as a window or
+// headless run of a scene that lists them, so a run's wall load does not
+// depend on who runs it (docs/contact.md, "The wall load"). An effect the scene lists, even switched off,
 // keeps the scene's settings: a run without wall contact then reports wall
 // forces as unavailable. Throws std::invalid_argument if the sac has no mesh.
 void addRunContacts(ModelDef& def, const Sac& sac);

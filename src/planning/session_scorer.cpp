@@ -64,16 +64,17 @@ ordered_json scoreJson(const ScoreSheet& s) {
   if (!s.ok) j["error"] = s.error;
   j["time_s"] = s.time;
   j["coil_length_placed_mm"] = units::mToMm(s.coilLengthPlaced);
-  j["packing_density"] = s.packingDensity;
-  j["neck_coverage"] = s.neckCoverage;
+  j["packing_percent"] = 100 * s.packingDensity;
+  j["neck_coverage_percent"] = 100 * s.neckCoverage;
   j["occlusion_class"] = s.occlusion;
   j["protrusion_events"] = s.protrusionEvents;
   j["protruding_at_end"] = s.protrudingAtEnd;
+  j["wall_load_window_ms"] = kWallLoadWindow * 1e3;
   if (s.wallForcesAvailable) {
-    j["max_wall_force_mN"] = s.maxWallForce * 1e3;  // N -> mN
+    j["largest_wall_load_mN"] = s.maxWallForce * 1e3;  // N -> mN
     j["time_above_safety_s"] = s.timeAboveSafety;
   } else {
-    j["max_wall_force_mN"] = nullptr;  // no contact forces in this build: unknown, not zero
+    j["largest_wall_load_mN"] = nullptr;  // no wall contact in this run: unknown, not zero
     j["time_above_safety_s"] = nullptr;
   }
   j["max_tip_force_mN"] = s.maxTipForce * 1e3;
@@ -81,7 +82,14 @@ ordered_json scoreJson(const ScoreSheet& s) {
   j["fluoroscopy_time_s"] = s.fluoroscopyTime;
   j["detached"] = s.detached;
   j["detach_in_sac"] = s.detachInSac;
+  ordered_json goal;
+  goal["min_packing_percent"] = 100 * s.goal.minPackingDensity;
+  goal["no_protrusion"] = s.goal.noProtrusion;
+  goal["max_wall_load_mN"] = s.goal.maxWallForce * 1e3;
+  goal["detach_in_sac"] = s.goal.detachInSac;
+  j["goal"] = goal;
   j["goal_met"] = s.goalMet;
+  j["goal_missed"] = s.goalMissed;
   j["device_messages"] = s.deviceMessages;
   return j;
 }
@@ -140,7 +148,7 @@ void SessionScorer::afterStep(const Model& model, const State& state, bool ok, c
   if (ds.detached && !wasDetached_) {
     score_.detached = true;
     const Vec3& tip = ds.releasedAt;
-    score_.detachInSac = sac_.neck.signedDistance(tip) >= 0 && insideSurface(sac_, tip);
+    score_.detachInSac = sac_.neck.signedDistance(tip) >= 0 && insideSurface(sac_, tip) && !measure(model, state).protruding;
   }
   if (!ok) {
     score_.ok = false;
@@ -152,7 +160,7 @@ void SessionScorer::afterStep(const Model& model, const State& state, bool ok, c
     score_.maxTipForce = std::max(score_.maxTipForce, felt_.felt);
   if (contacts_ && contacts_(model, state, forces_)) {
     score_.wallForcesAvailable = true;
-    wall_.add(forces_, dt_, case_.goal.maxWallForce);
+    wall_.add(state, forces_, dt_, case_.goal.maxWallForce);
     score_.maxWallForce = wall_.max;
     score_.timeAboveSafety = wall_.timeAbove;
   }
@@ -175,8 +183,25 @@ ScoreSheet SessionScorer::finish(const Model& model, const State& state) const {
   s.protrudingAtEnd = m.protruding;
   if (m.protruding && !protruding_) ++s.protrusionEvents;
   const Goal& g = case_.goal;
-  s.goalMet = s.ok && s.packingDensity >= g.minPackingDensity && (!g.noProtrusion || s.protrusionEvents == 0) &&
-              (!s.wallForcesAvailable || s.maxWallForce <= g.maxWallForce) && (!g.detachInSac || s.detachInSac);
+  s.goal = g;
+  char b[160];
+  if (!s.ok) s.goalMissed.push_back("the session ended with a refused step");
+  if (s.packingDensity < g.minPackingDensity) {
+    std::snprintf(b, sizeof b, "packing %.1f %% is below %.0f %%", 100 * s.packingDensity, 100 * g.minPackingDensity);
+    s.goalMissed.push_back(b);
+  }
+  if (g.noProtrusion && s.protrusionEvents > 0)
+    s.goalMissed.push_back("the coil protruded through the neck " + std::to_string(s.protrusionEvents) + " time(s)" +
+                           (s.protrudingAtEnd ? ", and does at the end" : ""));
+  if (s.wallForcesAvailable && s.maxWallForce > g.maxWallForce) {
+    std::snprintf(b, sizeof b, "the wall load reached %.1f mN (limit %.0f mN)", 1e3 * s.maxWallForce,
+                  1e3 * g.maxWallForce);
+    s.goalMissed.push_back(b);
+  }
+  if (g.detachInSac && !s.detachInSac)
+    s.goalMissed.push_back(s.detached ? "detached with the tip outside the sac or the coil through the neck"
+                                      : "not detached");
+  s.goalMet = s.goalMissed.empty();
   return s;
 }
 

@@ -32,14 +32,19 @@ struct ScoreSheet {
   int protrusionEvents = 0;        // times the coil started protruding (sampled every 0.1 s)
   bool protrudingAtEnd = false;
   bool wallForcesAvailable = false;
-  double maxWallForce = 0;         // N, largest wall load lasting 5 steps (WallForceStats)
+  double maxWallForce = 0;         // N, largest sustained wall load (physics/contact/wall_load.h: lasting 5 ms)
   double timeAboveSafety = 0;      // s with some wall force above the goal's threshold
   double maxTipForce = 0;          // N, force of the coil on the catheter tip felt with the pusher at rest
   int repositionings = 0;          // pulls of the coil back into the catheter
   double fluoroscopyTime = 0;      // s spent in the X-ray (xray or biplane) view
   bool detached = false;
-  bool detachInSac = false;        // the catheter tip (detachment zone) was inside the sac at detach
+  // At detach the catheter tip (the detachment zone) was inside the sac and
+  // no coil protruded through the neck (a coil detached half in the parent
+  // vessel is not detached in the sac, wherever the tip was).
+  bool detachInSac = false;
+  Goal goal;                       // what was judged
   bool goalMet = false;
+  std::vector<std::string> goalMissed;  // why not, one line per part of the goal missed
   bool ok = true;                  // false: a step was refused
   std::string error;
   // Device commands refused and device limits reached ("t = 0.000 s: refused:
@@ -47,7 +52,8 @@ struct ScoreSheet {
   std::vector<std::string> deviceMessages;
 };
 
-// The score sheet as JSON ("coilsim-score/1"), in edge units (mm, mN, s).
+// The score sheet as JSON ("coilsim-score/1"), in edge units (mm, mN, s,
+// packing and neck coverage in percent), with the goal it judged.
 nlohmann::ordered_json scoreJson(const ScoreSheet& s);
 
 // One command as a timeline file holds it ({"t_s", "push": {...}}), edge units.

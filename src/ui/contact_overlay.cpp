@@ -47,6 +47,8 @@ void visit(const Rod& r, ContactSummary& sum, double& maxForce, DrawData* out, d
 
 ContactSummary addContactMarkers(const State& state, double arrowLength, DrawData& out) {
   ContactSummary sum;
+  sum.wallLoad = state.stats.wallLoad.now;
+  sum.wallLoadMax = state.stats.wallLoad.max;
   double maxForce = 0;
   // First the largest force (for the arrows' scale), then the markers.
   for (const RodState& r : state.rods)

@@ -10,7 +10,10 @@ namespace coilsim::ui {
 struct ContactSummary {
   bool available = false;  // this build's State carries contact forces
   int contacts = 0;        // wall, self and rod contacts found at the last step
-  double maxWallForce = 0; // N, largest normal force of a wall on one node
+  double maxWallForce = 0; // N, largest normal force of a wall on one node at the last step (penalty spikes too)
+  // N, the sustained wall load now and its largest since the start (State::stats.wallLoad,
+  // physics/contact/wall_load.h): the figure the read-outs, score sheets and plans report.
+  double wallLoad = 0, wallLoadMax = 0;
 };
 
 // Appends one point per contact (at the contact on the centre line; wall

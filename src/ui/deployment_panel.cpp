@@ -48,11 +48,10 @@ void readOuts(const Session& session, PanelContext& ctx) {
   }
   const ContactSummary& c = session.contacts();
   if (!c.available)
-    ImGui::TextDisabled("max wall force: this build has no contact forces");
-  else if (c.contacts == 0)
-    ImGui::TextDisabled("max wall force: no contact");
+    ImGui::TextDisabled("wall load: this build has no contact forces");
   else
-    ImGui::Text("max wall force %.3f mN (%d contacts)", 1e3 * c.maxWallForce, c.contacts);
+    ImGui::Text("wall load %.3f mN, largest %.3f mN (lasting 5 ms; %d contacts)", 1e3 * c.wallLoad,
+                1e3 * c.wallLoadMax, c.contacts);
   if (session.timelineSize() > 0)
     ImGui::TextDisabled("timeline: %zu of %zu commands started", session.timelineCursor(), session.timelineSize());
 }

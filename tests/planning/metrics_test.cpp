@@ -95,30 +95,20 @@ TEST(Metrics, OcclusionClassThresholds) {
   EXPECT_EQ(occlusionClass(0.10, 0.9), 3);
 }
 
-TEST(Metrics, WallForceStatistics) {
+TEST(Metrics, WallForceStatisticsFollowTheStatesSustainedLoad) {
+  // Two contacting nodes at 5 mN and 1 mN for 10 steps of 1 ms: the mean is
+  // over contacting node samples, the time above 2 mN counts the steps
+  // whose sustained load (5 mN once the 5 ms window is full) is above it.
+  State state;
   WallForceStats w;
-  w.sustainSteps = 1;
-  w.add({{0.0, 5e-3}}, 1e-3, 1e-3);  // one contacting node, 5 mN
-  w.add({{1e-4, 0.0}}, 1e-3, 1e-3);  // 0.1 mN, below threshold
+  for (int s = 0; s < 10; ++s) {
+    addWallLoad(state.stats.wallLoad, 5e-3, 1e-3, 1e-3 * s);
+    w.add(state, {{0.0, 5e-3, 1e-3}}, 1e-3, 2e-3);
+  }
   EXPECT_DOUBLE_EQ(w.max, 5e-3);
   EXPECT_DOUBLE_EQ(w.peak, 5e-3);
-  EXPECT_DOUBLE_EQ(w.mean(), (5e-3 + 1e-4) / 2);
-  EXPECT_DOUBLE_EQ(w.timeAbove, 1e-3);
-}
-
-TEST(Metrics, AWallLoadCountsWhenItLasts) {
-  // A 1 N spike every other step (contact chatter) over a steady 2 mN load:
-  // the sustained load is the 2 mN, the peak the spike.
-  WallForceStats w;
-  w.sustainSteps = 3;
-  for (int s = 0; s <= 20; ++s) w.add({{2e-3, s % 2 ? 1.0 : 0.0}}, 1e-3, 0.01);  // ends on a quiet step
-  EXPECT_DOUBLE_EQ(w.max, 2e-3);
-  EXPECT_DOUBLE_EQ(w.peak, 1.0);
-  EXPECT_DOUBLE_EQ(w.timeAbove, 0.0);
-  // A load that lasts is counted from the step it has lasted sustainSteps.
-  for (int s = 0; s < 10; ++s) w.add({{0.05}}, 1e-3, 0.01);
-  EXPECT_DOUBLE_EQ(w.max, 0.05);
-  EXPECT_NEAR(w.timeAbove, 8e-3, 1e-12);
+  EXPECT_DOUBLE_EQ(w.mean(), 3e-3);
+  EXPECT_NEAR(w.timeAbove, 6e-3, 1e-12);  // steps 5..10 of the window
 }
 
 }  // namespace

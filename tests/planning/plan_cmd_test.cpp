@@ -51,7 +51,7 @@ TEST(PlanCommand, TwoCoilsGiveTheTableAndTheImages) {
   for (const auto& c : plan["coils"]) {
     EXPECT_TRUE(c["ok"].get<bool>()) << c.dump();
     EXPECT_NEAR(c["sac_volume_mm3"].get<double>(), sac, 0.01 * sac);
-    const double pd = c["packing_density"].get<double>();
+    const double pd = c["packing_percent"].get<double>() / 100;
     EXPECT_GE(pd, 0.0);
     EXPECT_LE(pd, 1.0);
     // Packing is the coil volume over the sac volume, and the coil volume pi r^2 l of what is inside.
