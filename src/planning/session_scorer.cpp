@@ -73,9 +73,13 @@ ordered_json scoreJson(const ScoreSheet& s) {
   if (s.wallForcesAvailable) {
     j["largest_wall_load_mN"] = s.maxWallForce * 1e3;  // N -> mN
     j["time_above_safety_s"] = s.timeAboveSafety;
+    j["max_wall_penetration_um"] = s.maxWallPenetration * 1e6;  // m -> um
+    j["max_wall_penetration_of_radius"] = s.maxWallPenetrationOfRadius;
   } else {
     j["largest_wall_load_mN"] = nullptr;  // no wall contact in this run: unknown, not zero
     j["time_above_safety_s"] = nullptr;
+    j["max_wall_penetration_um"] = nullptr;
+    j["max_wall_penetration_of_radius"] = nullptr;
   }
   j["max_tip_force_mN"] = s.maxTipForce * 1e3;
   j["repositionings"] = s.repositionings;
@@ -176,6 +180,8 @@ ScoreSheet SessionScorer::finish(const Model& model, const State& state) const {
   ScoreSheet s = score_;
   s.time = time();
   s.coilLengthPlaced = state.device.deployed;
+  s.maxWallPenetration = state.stats.maxWallPenetration;
+  s.maxWallPenetrationOfRadius = state.stats.maxWallPenetrationOfRadius;
   const SacMetrics m = measure(model, state);
   s.packingDensity = m.packingDensity;
   s.neckCoverage = m.neckCoverage;

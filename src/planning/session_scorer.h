@@ -34,6 +34,9 @@ struct ScoreSheet {
   bool wallForcesAvailable = false;
   double maxWallForce = 0;         // N, largest sustained wall load (physics/contact/wall_load.h: lasting 5 ms)
   double timeAboveSafety = 0;      // s with some wall force above the goal's threshold
+  // Deepest the wire went past the wall's skin at any step's contact
+  // detection, in m and in wire radii (State::stats, since the session's start).
+  double maxWallPenetration = 0, maxWallPenetrationOfRadius = 0;
   double maxTipForce = 0;          // N, force of the coil on the catheter tip felt with the pusher at rest
   int repositionings = 0;          // pulls of the coil back into the catheter
   double fluoroscopyTime = 0;      // s spent in the X-ray (xray or biplane) view
