@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "app/options.h"
+#include "app/graphics.h"
 #include "app/run_scene.h"
 #include "physics/effect.h"
 #include "physics/rod_quantities.h"

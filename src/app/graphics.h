@@ -1,0 +1,45 @@
+#pragma once
+// What the command files ask of the window and the off-screen renderer,
+// beyond the window commands' own headers (bench_render.h,
+// practice_window.h, validate_window.h, validate_plots.h' savePng). CMake
+// compiles the graphics files (graphics_ui.cpp, bench_render.cpp,
+// practice_window.cpp, validate_window.cpp, window_setup.cpp) when the ui
+// layer is built, and graphics_none.cpp in their place when it is not:
+// there each function says "built without graphics" and returns the
+// failure its contract names. Command files hold no #ifdef.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/run_scene.h"
+#include "io/scene.h"
+#include "physics/device.h"
+#include "physics/model.h"
+#include "physics/state.h"
+#include "physics/triangle_mesh.h"
+
+namespace coilsim::app {
+
+// True when this binary has the ui layer (window and off-screen rendering).
+bool haveUi();
+
+// `coilsim run`'s window on `model` and `state` (static scenes solved
+// before): the timeline played as the headless run plays it, live
+// read-outs when an obstacle is a phantom with its sac, the panel's coil
+// and catheter choice (which may replace `model`). Returns the window's
+// exit code; without graphics, kExitUsage after saying so on stderr.
+int runSceneWindow(Model& model, State& state, const io::SceneSpec& spec, const RunOptions& options,
+                   const std::vector<TimedCommand>& timeline);
+
+// `coilsim run --screenshot`: the last frame off-screen, in options.view
+// at options.width x height. False with `error` set if it cannot (no
+// OpenGL context, unwritable file, built without graphics).
+bool sceneScreenshot(const Model& model, const State& state, const RunOptions& options, std::string& error);
+
+// A plan's picture of one run: the 3D view without the panel, titled
+// `title`, with the `sac` mesh drawn unless an obstacle of the model is
+// that mesh. False with `error` set if it cannot (as above).
+bool planPicture(const Model& model, const State& state, const std::string& title, int width, int height,
+                 const std::shared_ptr<const TriangleMesh>& sac, const std::string& path, std::string& error);
+
+}  // namespace coilsim::app
