@@ -14,15 +14,14 @@
 
 #include "app/bench_contact.h"
 #include "app/progress.h"
+#include "app/graphics.h"
 #include "app/run_scene.h"
 #include "app/bench_dense.h"
 #include "physics/run.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
 
-#ifdef COILSIM_HAVE_UI
 #include "app/bench_render.h"
-#endif
 #include "app/bench_validation.h"
 
 namespace coilsim {
@@ -206,9 +205,7 @@ int runBench(const std::vector<std::string>& args) {
   benchContactFigures(record, quick, json);
   benchDenseFigures(record, quick, json);
   ++phase;
-#ifdef COILSIM_HAVE_UI
-  benchRenderFigures(record, quick, json);
-#endif
+  if (app::haveUi()) benchRenderFigures(record, quick, json);
   progress.finish();
   if (json) {
     printJson(fig);

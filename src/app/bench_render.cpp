@@ -1,6 +1,5 @@
-// Compiled into coilsim_app always (its sources are globbed); only a build
-// with the ui layer has something to draw with.
-#ifdef COILSIM_HAVE_UI
+// Compiled with the ui layer only (src/app/CMakeLists.txt); graphics_none.cpp
+// stands in for it without.
 #include "app/bench_render.h"
 
 #include <cstdio>
@@ -85,4 +84,3 @@ void benchRenderFigures(const std::function<void(const std::string&, double)>& s
 
 }  // namespace coilsim
 
-#endif  // COILSIM_HAVE_UI

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <exception>
 
-#include "app/case_window.h"
+#include "app/graphics.h"
 #include "app/exit_codes.h"
 #include "io/json_reader.h"
 #include "io/json_writer.h"
@@ -152,9 +152,8 @@ int runEdit(const std::vector<std::string>& args) {
   for (const std::string& path : {out, screenshot})
     if (!path.empty())
       if (const std::string why = io::whyNotWritable(path); !why.empty()) return usage(why);
-#ifndef COILSIM_HAVE_UI
-  if (window || !screenshot.empty()) return usage("this build has no window or screenshots (no ui layer)");
-#endif
+  if ((window || !screenshot.empty()) && !haveUi())
+    return usage("this build has no window or screenshots (no ui layer)");
   try {
     planning::CaseEditor e(file);
     for (const auto& [option, value] : edits) {
@@ -176,20 +175,11 @@ int runEdit(const std::vector<std::string>& args) {
       }
     }
     printEdited(e);
-#ifdef COILSIM_HAVE_UI
     if (window || !screenshot.empty()) {
-      const ui::CaseEditorHooks hooks = caseEditorHooks(e, file, out.empty() ? file : out);
-      ui::CaseEditorWindowOptions wo;
-      wo.screenshotPath = screenshot;
-      if (window) return ui::runCaseEditorWindow(hooks, wo);
-      std::string error;
-      if (!ui::renderCaseEditorOffscreen(hooks, wo, error)) {
-        std::fprintf(stderr, "coilsim case edit: %s\n", error.c_str());
-        return kExitFailure;
-      }
+      const int code = caseEditorGraphics(e, file, out.empty() ? file : out, window, screenshot);
+      if (code >= 0) return code;
       if (out.empty()) return kExitOk;
     }
-#endif
     e.save(out);
     std::printf("wrote %s\n", out.c_str());
     return kExitOk;

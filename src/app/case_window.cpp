@@ -1,6 +1,5 @@
 #include "app/case_window.h"
 
-#ifdef COILSIM_HAVE_UI
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -149,4 +148,3 @@ ui::CaseEditorHooks caseEditorHooks(planning::CaseEditor& e, const std::string& 
 }
 
 }  // namespace coilsim::app
-#endif

@@ -3,7 +3,6 @@
 // editor window (ui/case_editor_window.h), or one frame of it off-screen
 // (--screenshot). The editing stays in CaseEditor; this wires its moves,
 // refusals and morphology to the window's plain hooks.
-#ifdef COILSIM_HAVE_UI
 #include <string>
 
 #include "planning/case_editor.h"
@@ -21,4 +20,3 @@ ui::CaseEditorHooks caseEditorHooks(planning::CaseEditor& editor, const std::str
 ui::CaseEditorView caseEditorView(const planning::CaseEditor& editor);
 
 }  // namespace coilsim::app
-#endif

@@ -124,7 +124,7 @@ constexpr std::array kPractice{
 constexpr OptionSpec kWorkbenchOut =
     value("--out", K::Directory, "DIR", "write the report, its tables and plots into DIR");
 constexpr OptionSpec kFit =
-    value("--fit", K::List, "a,b", "fit these parameters (young_modulus, an effect's, or an effect's name)");
+    value("--fit", K::List, "a,b", "fit these parameters (a rod quantity, e.g. young_modulus_gpa; EFFECT.PARAM; or an effect's name)");
 constexpr OptionSpec kSpacing = number("--spacing", "MM", "beam length in mm (default 2)", 0.05, 100);
 constexpr OptionSpec kPushIncrement =
     number("--push-increment", "MM", "deployed length between static solves in mm (default 2)", 0.05, 100);
@@ -204,7 +204,7 @@ constexpr std::array kCommands{
                 "         [--input TIMELINE] [--views T:VIEW,...] [--duration S] [--screenshot PNG]",
                 "CASE", K::JsonFile, 1, 1, kPractice, "exit codes: 0 ok, 1 a step was refused, 2 bad input"},
     CommandSpec{"validate", "the model against a measured coil (docs/validation.md)",
-                "validate FILE... [--effects a,b] [--fit young_modulus,...] --out DIR [options]   (several: jointly)\n"
+                "validate FILE... [--effects a,b] [--fit young_modulus_gpa,...] --out DIR [options]   (several: jointly)\n"
                 "validate FILE --window [--effects a,b] [--fit ...]   (the panel)\n"
                 "validate FILE --screenshot PNG [--toggle a,b] [--auto-fit]   (the panel off-screen)",
                 "FILE...", K::JsonFile, 1, -1, kValidate,

@@ -27,7 +27,7 @@ using namespace validation;
 int usage(const std::string& message) {
   std::fprintf(stderr,
                "coilsim diagnose: %s\n"
-               "usage: coilsim diagnose FILE... [--fit young_modulus,...] --out DIR [--candidates a,b]\n"
+               "usage: coilsim diagnose FILE... [--fit young_modulus_gpa,...] --out DIR [--candidates a,b]\n"
                "         [--spacing MM] [--push-increment MM] [--no-plots] [--quiet]\n"
                "(docs/validation.md)\n",
                message.c_str());
@@ -102,7 +102,7 @@ void reportOne(const WorkbenchArgs& a, const OneFile& f, const StageSimulator& s
     md << "| " << c.effect << " | " << fmt("%.1f %%", 100 * c.explainedFraction) << (c.refitted ? "" : " (screened)") << " | "
        << (c.significant ? "yes" : "no") << " | ";
     for (const FittedValue& v : c.fit.fitted)
-      if (v.name != "young_modulus") md << v.name << " = " << fmt("%.4g", v.value / v.toSI) << unitSuffix(v.unit) << " " << plusMinus(v.sigma / v.toSI, v.unit) << " ";
+      if (!isYoungModulus(v.name)) md << v.name << " = " << fmt("%.4g", v.value / v.toSI) << unitSuffix(v.unit) << " " << plusMinus(v.sigma / v.toSI, v.unit) << " ";
     md << "|";
     for (double e : c.stageErrorAfter) md << " " << fmt("%.4f", e);
     md << " | " << c.note << " |\n";
@@ -175,7 +175,7 @@ int runDiagnose(const std::vector<std::string>& argsIn) {
       const ModelParams p = ModelParams::nominal(f.m);
       for (const std::string& name : o.fit) {
         std::string why;
-        if (name != "young_modulus" && !describeParam(name, p, f.m, why)) return usage("--fit: " + why + " (diagnose fits model parameters only)");
+        if (!isYoungModulus(name) && !describeParam(name, p, f.m, why)) return usage("--fit: " + why + " (diagnose fits model parameters only)");
       }
       for (const std::string& c : candidateNames) {
         (void)EffectRegistry::global().use(c);  // throws naming an unknown effect
@@ -232,7 +232,7 @@ int runDiagnose(const std::vector<std::string>& argsIn) {
   if (several) {
     std::vector<JointFile> jf;
     std::vector<std::string> fit = expandFitNames(a.fit, files[0].m);
-    if (std::find(fit.begin(), fit.end(), "young_modulus") == fit.end()) fit.insert(fit.begin(), "young_modulus");
+    if (std::none_of(fit.begin(), fit.end(), isYoungModulus)) fit.insert(fit.begin(), "young_modulus");
     for (size_t i = 0; i < files.size(); ++i) jf.push_back({sims[i].get(), cmps[i].get(), ModelParams::nominal(files[i].m)});
     // One coil: the first file's nominal coil values for all (each keeps its setup).
     for (JointFile& f : jf) f.start.youngModulus = jf[0].start.youngModulus, f.start.poissonRatio = jf[0].start.poissonRatio;

@@ -4,8 +4,11 @@
 #include <string_view>
 
 #include "app/options.h"
+#include "app/graphics.h"
 #include "app/run_scene.h"
 #include "physics/effect.h"
+#include "physics/rod_quantities.h"
+#include "validation/params.h"
 
 namespace coilsim::app {
 namespace {
@@ -63,6 +66,20 @@ void printEffects(std::FILE* to) {
   }
 }
 
+// The rod quantities, from their one declaration (physics/rod_quantities.h).
+void printRodQuantities(std::FILE* to) {
+  std::fputs("rod quantities: the same key in scene files, coil-measurement files and --fit (unit, range; * --fit "
+             "can fit it):\n",
+             to);
+  const std::vector<const rodq::Quantity*> fit = validation::rodFitQuantities();
+  for (const rodq::Quantity* q : rodq::kAll) {
+    const ParamSpec& p = q->spec;
+    const bool fits = std::find(fit.begin(), fit.end(), q) != fit.end();
+    std::fprintf(to, "  %-18s %s %-5s in %c%g, %g]: %s\n", std::string(p.name).c_str(), fits ? "*" : " ",
+                 std::string(p.unit).c_str(), q->minOpen ? '(' : '[', p.min, p.max, std::string(p.description).c_str());
+  }
+}
+
 // A bash word list: "--out --input ...".
 std::string words(const CommandSpec& c) {
   std::string w = "--help";
@@ -109,6 +126,10 @@ void printCommandHelp(const CommandSpec& c, std::FILE* to) {
     std::fputc('\n', to);
     printEffects(to);
   }
+  if (c.name == "run" || c.name == "validate" || c.name == "diagnose") {
+    std::fputc('\n', to);
+    printRodQuantities(to);
+  }
 }
 
 void printMainHelp(std::FILE* to) {
@@ -125,6 +146,8 @@ void printMainHelp(std::FILE* to) {
   }
   std::fputc('\n', to);
   printEffects(to);
+  std::fputc('\n', to);
+  printRodQuantities(to);
 }
 
 std::string bashCompletion() {

@@ -12,16 +12,13 @@
 
 #include "app/exit_codes.h"
 #include "app/format.h"
+#include "app/graphics.h"
 #include "app/plan_runner.h"
-#include "app/sac_drawing.h"
 #include "app/stop_signal.h"
 #include "io/json_writer.h"
 #include "io/units.h"
 #include "planning/case_file.h"
 #include "planning/plan.h"
-#ifdef COILSIM_HAVE_UI
-#include "ui/viewer.h"
-#endif
 
 namespace coilsim::app {
 namespace {
@@ -137,31 +134,11 @@ std::string parseArgs(const std::vector<std::string>& args, PlanArgs& a) {
   return "";
 }
 
-#ifdef COILSIM_HAVE_UI
 bool screenshot(const PlanSetup& setup, const CandidateResult& r, const PlanArgs& a, const std::string& path,
                 std::string& error) {
-  ui::ViewerOptions v;
-  v.scenePath = setup.label + " - " + r.name + " (" + r.variant + ")";
-  v.width = a.width, v.height = a.height;
-  v.screenshotPath = path;
-  v.drawPanel = false;
-  const auto mesh = setup.sac.mesh;
-  // Runs have the sac as a wall (drawn with the model's obstacles); a scene's own wall may be another mesh.
-  const DrawMesh neck = neckDisc(setup.sac);
-  v.addDrawData = [mesh, neck](const Model& model, const State&, DrawData& d) {
-    if (!neck.triangles.empty()) d.meshes.push_back(neck);
-    for (const Obstacle& o : model.obstacles)
-      if (o.mesh == mesh) return;
-    DrawMesh m;
-    m.name = mesh->name;
-    m.vertices = mesh->vertices;
-    m.triangles = mesh->triangles;
-    d.meshes.push_back(std::move(m));
-  };
-  v.legend = sacLegend(setup.sac);
-  return ui::renderOffscreen(r.model, r.state, v, error);
+  return planPicture(r.model, r.state, setup.label + " - " + r.name + " (" + r.variant + ")", a.width, a.height,
+                     setup.sac, path, error);
 }
-#endif
 
 std::string fileSafe(std::string s) {
   for (char& c : s)
@@ -233,15 +210,14 @@ int plan(const PlanArgs& a) {
     const CandidateResult& r = results[i];
     allOk = allOk && r.ok;
     if (!r.ok) std::fprintf(stderr, "coilsim plan: %s (%s): %s\n", r.name.c_str(), r.variant.c_str(), r.error.c_str());
-    if (!a.screenshots || r.state.rods.empty()) continue;
-#ifdef COILSIM_HAVE_UI
+    // A build without graphics writes the plan without pictures.
+    if (!a.screenshots || r.state.rods.empty() || !haveUi()) continue;
     const std::string name = fileSafe(r.name + (r.variant == "nominal" ? "" : "-" + r.variant)) + ".png";
     std::string error;
     if (screenshot(setup, r, a, (std::filesystem::path(a.out) / name).string(), error))
       pj["coils"][i]["screenshot"] = name;
     else
       std::fprintf(stderr, "coilsim plan: no screenshot of %s: %s\n", r.name.c_str(), error.c_str());
-#endif
   }
   io::writeFileAtomic((std::filesystem::path(a.out) / "plan.json").string(), io::formatJson(pj));
   const std::string md = planning::planMarkdown(pj);

@@ -10,6 +10,8 @@
 #include <optional>
 
 #include "app/format.h"
+#include "app/graphics.h"
+#include "app/practice_window.h"
 #include "app/exit_codes.h"
 #include "app/progress.h"
 #include "app/stop_signal.h"
@@ -18,10 +20,6 @@
 #include "io/timeline.h"
 #include "planning/case_file.h"
 #include "planning/practice.h"
-#ifdef COILSIM_HAVE_UI
-#include "app/practice_window.h"
-#include "ui/viewer.h"
-#endif
 
 namespace coilsim::app {
 namespace {
@@ -118,9 +116,7 @@ int runPractice(const std::vector<std::string>& args) {
     }
   }
   if (casePath.empty()) return usage("practice needs a case file, e.g. scenes/cases/sphere-7mm.json");
-#ifndef COILSIM_HAVE_UI
-  if (window || !screenshot.empty()) return usage("this build has no window or screenshots (no ui layer)");
-#endif
+  if ((window || !screenshot.empty()) && !haveUi()) return usage("this build has no window or screenshots (no ui layer)");
   if (window) {
     if (!replay.empty()) return usage("--window practises by hand; --replay plays a session headless: drop one");
   } else if (out.empty()) {
@@ -139,7 +135,6 @@ int runPractice(const std::vector<std::string>& args) {
       }
   try {
     const planning::PracticeCase pc = planning::loadCase(casePath);
-#ifdef COILSIM_HAVE_UI
     if (window) {
       // By hand (or scripted, --input and --views as if typed), recorded and scored on close.
       const std::vector<TimedCommand> script = input.empty() ? std::vector<TimedCommand>() : io::loadTimeline(input);
@@ -152,13 +147,8 @@ int runPractice(const std::vector<std::string>& args) {
     std::string shotError;
     auto picture = [&](const planning::PracticeSession& s) {
       if (screenshot.empty()) return;
-      ui::ViewerOptions v = practiceViewer(pc, s, s.view());
-      v.screenshotPath = screenshot;
-      if (!ui::renderOffscreen(s.model(), s.state(), v, shotError)) std::fprintf(stderr, "coilsim practice: %s\n", shotError.c_str());
+      if (!practicePicture(pc, s, screenshot, shotError)) std::fprintf(stderr, "coilsim practice: %s\n", shotError.c_str());
     };
-#else
-    const std::function<void(const planning::PracticeSession&)> picture;
-#endif
     planning::ScoreSheet score;
     // Progress on a terminal; Ctrl-C ends the session after the current step, scored as it stands.
     std::optional<Progress> progress;

@@ -1,7 +1,6 @@
 // The practice window: recorded and scored from the window's own steps.
 #include "app/practice_window.h"
 
-#ifdef COILSIM_HAVE_UI
 #include <algorithm>
 #include <cstdio>
 #include <memory>
@@ -14,6 +13,7 @@
 #include "io/json_writer.h"
 #include "planning/run_contacts.h"
 #include "planning/session_scorer.h"
+#include "ui/viewer.h"
 
 namespace coilsim::app {
 namespace {
@@ -82,6 +82,24 @@ class WindowScorer : public ui::RunObserver {
   std::optional<planning::SessionScorer> scorer_;
 };
 
+// The window (or an off-screen picture) of a practice session's model and
+// state, with the live read-outs: packing, protrusion and wall-force warnings.
+ui::ViewerOptions practiceViewer(const planning::PracticeCase& pc, const planning::PracticeSession& session,
+                                 const std::string& view) {
+  ui::ViewerOptions v;
+  v.scenePath = pc.name + " - " + session.runningScore().coil;
+  v.view = view;
+  const Deployment dep = session.deployment();
+  const DrawMesh neck = neckDisc(pc.sac);
+  v.addDrawData = [dep, neck](const Model& m, const State& s, DrawData& d) {
+    planning::appendInactiveCatheter(m, s, dep, d);
+    if (!neck.triangles.empty()) d.meshes.push_back(neck);
+  };
+  v.legend = sacLegend(pc.sac);
+  v.readouts = liveReadouts(pc.sac, dep, pc.goal.maxWallForce, "Practice: " + pc.name);
+  return v;
+}
+
 // The window's setup for one coil of the case: model, deployment, read-outs, scorer.
 ui::SceneSetup practiceSetup(const planning::PracticeCase& pc, const std::string& coil, std::shared_ptr<WindowOutputs> outputs) {
   const planning::PracticeSession session(pc, coil);
@@ -105,22 +123,11 @@ ui::SceneSetup practiceSetup(const planning::PracticeCase& pc, const std::string
 
 }  // namespace
 
-// The window (or an off-screen picture) of a practice session's model and
-// state, with the live read-outs: packing, protrusion and wall-force warnings.
-ui::ViewerOptions practiceViewer(const planning::PracticeCase& pc, const planning::PracticeSession& session,
-                                 const std::string& view) {
-  ui::ViewerOptions v;
-  v.scenePath = pc.name + " - " + session.runningScore().coil;
-  v.view = view;
-  const Deployment dep = session.deployment();
-  const DrawMesh neck = neckDisc(pc.sac);
-  v.addDrawData = [dep, neck](const Model& m, const State& s, DrawData& d) {
-    planning::appendInactiveCatheter(m, s, dep, d);
-    if (!neck.triangles.empty()) d.meshes.push_back(neck);
-  };
-  v.legend = sacLegend(pc.sac);
-  v.readouts = liveReadouts(pc.sac, dep, pc.goal.maxWallForce, "Practice: " + pc.name);
-  return v;
+bool practicePicture(const planning::PracticeCase& pc, const planning::PracticeSession& session,
+                     const std::string& path, std::string& error) {
+  ui::ViewerOptions v = practiceViewer(pc, session, session.view());
+  v.screenshotPath = path;
+  return ui::renderOffscreen(session.model(), session.state(), v, error);
 }
 
 // By hand in the window: the case's coils in the panel, the case's catheter,
@@ -165,4 +172,3 @@ int practiseInWindow(const planning::PracticeCase& pc, std::string coil, const s
 }
 
 }  // namespace coilsim::app
-#endif

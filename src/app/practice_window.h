@@ -3,7 +3,6 @@
 // with scripted inputs typed into it), every input and view switch recorded,
 // the score kept from the window's own steps (planning::SessionScorer behind
 // a ui::RunObserver), the session file and score sheet written on close.
-#ifdef COILSIM_HAVE_UI
 #include <memory>
 #include <string>
 #include <utility>
@@ -13,7 +12,6 @@
 #include "physics/run.h"
 #include "planning/case_file.h"
 #include "planning/practice.h"
-#include "ui/viewer.h"
 
 namespace coilsim::app {
 
@@ -23,19 +21,21 @@ struct WindowOutputs {
   int exitCode = kExitOk;
 };
 
-// The window (or an off-screen picture) of a practice session's model and
-// state, with the live read-outs: packing, protrusion and wall-force warnings.
-ui::ViewerOptions practiceViewer(const planning::PracticeCase& pc, const planning::PracticeSession& session,
-                                 const std::string& view);
+// The last frame of a scripted session off-screen, in its current view, with
+// the live read-outs (packing, protrusion, wall-force warnings), written to
+// `path`. False with `error` set if it cannot (no OpenGL context, built
+// without graphics).
+bool practicePicture(const planning::PracticeCase& pc, const planning::PracticeSession& session,
+                     const std::string& path, std::string& error);
 
 // Opens the case in the window with `coil` (empty: the set's first), starting
 // in `view` (xray or biplane: X-ray views only); `script` and `views` are
 // typed in at their times; `duration` > 0 closes it after that much
 // simulated time, `screenshot` gets the last frame. Returns the window's
-// exit code, or outputs->exitCode (1 when a step was refused).
+// exit code, or outputs->exitCode (1 when a step was refused); without
+// graphics, kExitUsage after saying so on stderr.
 int practiseInWindow(const planning::PracticeCase& pc, std::string coil, const std::string& view,
                      const std::vector<TimedCommand>& script, const std::vector<std::pair<double, std::string>>& views,
                      double duration, const std::string& screenshot, std::shared_ptr<WindowOutputs> outputs);
 
 }  // namespace coilsim::app
-#endif

@@ -1,6 +1,7 @@
 #include "app/run_scene.h"
 #include "app/commands.h"
 #include "app/format.h"
+#include "app/graphics.h"
 #include "app/progress.h"
 #include "app/stop_signal.h"
 
@@ -22,10 +23,6 @@
 #include "planning/case_file.h"
 #include "planning/live_readouts.h"
 
-#ifdef COILSIM_HAVE_UI
-#include "app/window_setup.h"
-#include "ui/viewer.h"
-#endif
 
 namespace coilsim::app {
 namespace {
@@ -223,17 +220,6 @@ bool writeOut(const RunOptions& o, const Model& model, const State& state, const
   }
 }
 
-#ifdef COILSIM_HAVE_UI
-ui::ViewerOptions viewerOptions(const RunOptions& o) {
-  ui::ViewerOptions v;
-  v.scenePath = o.scene;
-  if (o.view) v.view = *o.view;
-  if (o.width) v.width = *o.width;
-  if (o.height) v.height = *o.height;
-  v.screenshotPath = o.screenshot;
-  return v;
-}
-#endif
 
 int run(const RunOptions& o) {
   const io::SceneSpec spec = io::loadScene(o.scene);  // throws InputError
@@ -265,38 +251,20 @@ int run(const RunOptions& o) {
 
   const bool window = !o.headless && haveDisplay();
   if (window) {
-#ifdef COILSIM_HAVE_UI
+    if (!haveUi())
+      return usageError("this coilsim was built without the ui layer, so it cannot open a window; run with --headless "
+                        "(or build with the graphics packages, see scripts/bootstrap)");
     if (spec.solve == io::SolveMode::Static) {
       Outcome r = simulateStatic(model, state, spec, record);
       std::printf("%s: %s\n", o.scene.c_str(), r.summary.c_str());
       if (!r.ok) std::fprintf(stderr, "coilsim: %s: %s\n", o.scene.c_str(), record.error.c_str());
     }
-    ui::ViewerOptions v = viewerOptions(o);
-    v.screenshotPath.clear();
-    v.windowScreenshotPath = o.screenshot;
-    if (o.steps) v.runSeconds = double(*o.steps) * model.timeStep;
-    if (o.durationS) v.runSeconds = *o.durationS;
-    // The window plays the timeline as the headless run does (ui::Session).
-    if (model.device) {
-      v.timeline = timeline;
-      // Packing, protrusion and wall-force warnings live when an obstacle is a phantom with its sac.
-      std::string note;
-      const std::optional<planning::Sac> sac = planning::sceneSac(spec, note);
-      if (sac) v.readouts = liveReadouts(*sac, *model.device, planning::Goal{}.maxWallForce, "Aneurysm read-outs");
-      std::printf("coilsim: live read-outs: %s\n", sac ? note.c_str() : ("none: " + note).c_str());
-      v.setup = sceneSetupChoices(spec, sac);
-    }
-    // A coil or catheter chosen in the panel replaces the model.
-    const int code = ui::runWindow(model, state, v);
+    const int code = runSceneWindow(model, state, spec, o, timeline);
     if (model.device) {
       record.deployment = state.device;
       record.catheterTip = catheterTip(model, state);
     }
     return writeOut(o, model, state, record) ? code : kExitUsage;
-#else
-    return usageError("this coilsim was built without the ui layer, so it cannot open a window; run with --headless "
-                      "(or build with the graphics packages, see scripts/bootstrap)");
-#endif
   }
 
   if (!o.headless && !haveDisplay())
@@ -322,34 +290,16 @@ int run(const RunOptions& o) {
   if (!writeOut(o, model, state, record)) return kExitUsage;
   if (r.stopped || stopRequested()) return stopExitCode();  // a static solve is not interrupted: it ends first
   if (!o.screenshot.empty()) {
-#ifdef COILSIM_HAVE_UI
     std::string error;
-    ui::ViewerOptions v = viewerOptions(o);
-    // The panel's sections as the window shows them: the read-outs, the coil and catheter.
-    if (model.device) {
-      std::string note;
-      const std::optional<planning::Sac> sac = planning::sceneSac(spec, note);
-      if (sac) v.readouts = liveReadouts(*sac, *model.device, planning::Goal{}.maxWallForce, "Aneurysm read-outs");
-      v.setup = sceneSetupChoices(spec, sac);
-    }
-    if (!ui::renderOffscreen(model, state, v, error)) {
+    if (!sceneScreenshot(model, state, spec, o, error)) {
       std::fprintf(stderr, "coilsim: screenshot %s failed: %s\n", o.screenshot.c_str(), error.c_str());
       return kExitFailure;
     }
-#endif
   }
   return r.ok ? kExitOk : kExitFailure;
 }
 
 }  // namespace
-
-bool haveUi() {
-#ifdef COILSIM_HAVE_UI
-  return true;
-#else
-  return false;
-#endif
-}
 
 bool haveDisplay() {
   for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY"})

@@ -20,9 +20,6 @@ struct RunOptions {
   std::optional<int> width, height;
 };
 
-// True when this binary has the ui layer (window and off-screen rendering).
-bool haveUi();
-
 // True when DISPLAY or WAYLAND_DISPLAY is set.
 bool haveDisplay();
 

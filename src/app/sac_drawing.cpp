@@ -1,6 +1,5 @@
 #include "app/sac_drawing.h"
 
-#ifdef COILSIM_HAVE_UI
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -69,4 +68,3 @@ std::vector<ui::LegendEntry> sacLegend(const planning::Sac& sac) {
 }
 
 }  // namespace coilsim::app
-#endif

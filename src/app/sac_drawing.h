@@ -3,7 +3,6 @@
 // its screenshots, plan pictures): the neck plane where it cuts the sac's
 // surface, so that the ostium can be judged in X-ray too, and a legend that
 // says what each colour is and whether the case has a parent vessel.
-#ifdef COILSIM_HAVE_UI
 #include <vector>
 
 #include "physics/draw_data.h"
@@ -28,4 +27,3 @@ bool hasParentVessel(const planning::Sac& sac);
 std::vector<ui::LegendEntry> sacLegend(const planning::Sac& sac);
 
 }  // namespace coilsim::app
-#endif

@@ -29,7 +29,7 @@ using namespace validation;
 int usage(const std::string& message) {
   std::fprintf(stderr,
                "coilsim validate: %s\n"
-               "usage: coilsim validate FILE... [--effects a,b] [--fit young_modulus,...] --out DIR\n"
+               "usage: coilsim validate FILE... [--effects a,b] [--fit young_modulus_gpa,...] --out DIR\n"
                "         [--spacing MM] [--push-increment MM] [--no-plots] [--quiet]\n"
                "       coilsim validate FILE --window [--effects a,b] [--fit ...]   (the panel)\n"
                "       coilsim validate FILE --screenshot PNG [--toggle a,b] [--auto-fit]   (the panel off-screen)\n"
@@ -85,8 +85,10 @@ std::string parseWorkbenchArgs(const std::vector<std::string>& args, bool allowE
       if (!value()) return "--effects needs a list of effects, e.g. buoyancy,drag";
       a.effects = splitList(v);
     } else if (arg == "--fit") {
-      if (!value()) return "--fit needs a list of parameters, e.g. young_modulus,buoyancy";
+      if (!value()) return "--fit needs a list of parameters, e.g. young_modulus_gpa,buoyancy";
       a.fit = splitList(v);
+      for (const std::string& n : a.fit)
+        if (const std::string note = oldFitNameNote(n); !note.empty()) std::fprintf(stderr, "coilsim: note: %s\n", note.c_str());
     } else if (arg == "--spacing") {
       if (std::string e = millimetres(a.spacingMm); !e.empty()) return e;
     } else if (arg == "--push-increment") {
@@ -109,12 +111,17 @@ std::string parseWorkbenchArgs(const std::vector<std::string>& args, bool allowE
 
 std::vector<std::string> expandFitNames(const std::vector<std::string>& names, const Measurement& m) {
   std::vector<std::string> out;
+  // A parameter named twice (young_modulus and young_modulus_gpa) is fitted once, under its first name.
+  auto add = [&](const std::string& n) {
+    for (const std::string& o : out)
+      if (canonicalFitName(o) == canonicalFitName(n)) return;
+    out.push_back(n);
+  };
   for (const std::string& n : names) {
     if (n.find('.') == std::string::npos && EffectRegistry::global().find(n)) {
-      const Candidate c = candidateFor(n, m);
-      out.insert(out.end(), c.params.begin(), c.params.end());
+      for (const std::string& p : candidateFor(n, m).params) add(p);
     } else {
-      out.push_back(n);
+      add(n);
     }
   }
   return out;

@@ -7,9 +7,6 @@
 #include <cmath>
 #include <cstdio>
 
-#ifdef COILSIM_HAVE_UI
-#include "render/image.h"
-#endif
 
 // Debian's libstb-dev header: text as quads, which we fill as rectangles.
 #pragma GCC diagnostic push
@@ -249,18 +246,6 @@ Canvas plotOverlay(const validation::StageComparison& st, const validation::Stag
              kBlack);
     }
   return p.take();
-}
-
-bool savePng(const std::string& path, const Canvas& c, std::string& error) {
-#ifdef COILSIM_HAVE_UI
-  render::Image img;
-  img.width = c.width, img.height = c.height, img.pixels = c.pixels;
-  return render::writePng(path, img, error);
-#else
-  (void)c;
-  error = path + ": not written (this build has no PNG writer: built without graphics)";
-  return false;
-#endif
 }
 
 }  // namespace coilsim::app

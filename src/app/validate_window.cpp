@@ -16,13 +16,10 @@
 #include "io/measurement.h"
 #include "io/units.h"
 
-#ifdef COILSIM_HAVE_UI
 #include "ui/validation_panel.h"
-#endif
 
 namespace coilsim::app {
 
-#ifdef COILSIM_HAVE_UI
 namespace {
 
 using namespace validation;
@@ -217,14 +214,5 @@ int runValidateWindow(const WorkbenchArgs& a, const WindowArgs& w) {
   }
   return kExitOk;
 }
-
-#else
-
-int runValidateWindow(const WorkbenchArgs&, const WindowArgs&) {
-  std::fprintf(stderr, "coilsim validate: this build has no graphics (--window and --screenshot need them)\n");
-  return kExitFailure;
-}
-
-#endif
 
 }  // namespace coilsim::app

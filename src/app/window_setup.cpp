@@ -1,7 +1,6 @@
 // Live read-outs and the coil / catheter choice of the window.
 #include "app/window_setup.h"
 
-#ifdef COILSIM_HAVE_UI
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -133,4 +132,3 @@ ui::SetupChoices sceneSetupChoices(const io::SceneSpec& scene, const std::option
 }
 
 }  // namespace coilsim::app
-#endif

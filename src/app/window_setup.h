@@ -3,7 +3,6 @@
 // planning read-outs (packing, protrusion, wall-force warnings) and the
 // panel's coil and catheter choice, built here because they need the io and
 // planning layers that the ui does not link.
-#ifdef COILSIM_HAVE_UI
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,4 +47,3 @@ void applyCatheter(const CatheterChoice& choice, io::DeploymentSpec& deployment)
 ui::SetupChoices sceneSetupChoices(const io::SceneSpec& scene, const std::optional<planning::Sac>& sac);
 
 }  // namespace coilsim::app
-#endif

@@ -6,6 +6,7 @@
 
 #include "io/json_reader.h"
 #include "io/json_writer.h"
+#include "io/quantity_reader.h"
 #include "io/units.h"
 
 namespace coilsim::io {
@@ -40,16 +41,10 @@ constexpr double kMaxCoords = 1e6;         // |x|, |y|, |z| in mm
 constexpr size_t kMaxPoints = 100'000;     // per centre line or polyline
 constexpr double kMaxTwistDeg = 36'000;    // |twist| of a stage or a sample: 100 turns
 constexpr double kMaxHistorySpanS = 3600;  // capture time after the first push sample
-constexpr double kMaxCoilLengthMm = 2000;  // a coil (or a bench wire) of 2 m at most
 
-// A number within `bounds` (the format's own message), then at most `highest`
-// (a limit of docs/input-limits.md, with its own message).
-double atMost(const JsonNode& n, const Bounds& bounds, double highest, std::string_view unit) {
-  const double v = n.number(bounds);
-  if (v > highest)
-    n.fail("expected at most " + fmt(highest) + " " + std::string(unit) + ", got " + fmt(v) + " (docs/input-limits.md)");
-  return v;
-}
+// A rod quantity in SI: key, bounds and unit from its declaration
+// (physics/rod_quantities.h), as in a scene file.
+double readSI(const JsonNode& parent, const rodq::Quantity& q) { return units::toSI(q.spec, readEdge(parent, q)); }
 
 // Points in mm, at least 2; consecutive points must differ (a centre line or
 // polyline with a zero-length segment has no tangent there).
@@ -76,10 +71,14 @@ RestShapeDef readRest(const JsonNode& n, double lengthM, double wireRadiusM) {
   if (type == "helix") {
     r.type = RestShapeDef::Type::Helix;
     // A loop cannot be tighter than the wire it is wound from, nor wider than the coil is long.
-    const JsonNode loop = n.child("loop_diameter_mm");
-    r.loopDiameter = units::mmToM(
-        loop.number(Bounds::closed(units::mToMm(2 * wireRadiusM), units::mToMm(lengthM), "mm (from the wire diameter to the coil length)")));
-    r.pitch = units::mmToM(n.child("pitch_mm").number(Bounds::closed(0, units::mToMm(lengthM), "mm (at most the coil length)")));
+    r.loopDiameter = readSI(n, rodq::kLoopDiameter);
+    if (r.loopDiameter < 2 * wireRadiusM || r.loopDiameter > lengthM)
+      n.child(rodq::kLoopDiameter.spec.name)
+          .expected("a loop diameter from the wire diameter " + fmt(units::mToMm(2 * wireRadiusM)) + " mm to the coil length " +
+                    fmt(units::mToMm(lengthM)) + " mm");
+    r.pitch = readSI(n, rodq::kPitch);
+    if (r.pitch > lengthM)
+      n.child(rodq::kPitch.spec.name).expected("a pitch of at most the coil length " + fmt(units::mToMm(lengthM)) + " mm");
     r.rightHanded = n.child("handedness").oneOf({"right", "left"}) == "right";
     return r;
   }
@@ -99,14 +98,14 @@ RestShapeDef readRest(const JsonNode& n, double lengthM, double wireRadiusM) {
 validation::CoilDef readCoil(const JsonNode& n) {
   validation::CoilDef c;
   if (!n.isObject()) n.expected("an object describing the coil");
-  c.length = units::mmToM(atMost(n.child("length_mm"), Bounds::positive(), kMaxCoilLengthMm, "mm"));
-  c.wireRadius = units::mmToM(atMost(n.child("wire_radius_mm"), Bounds::positive(), 5, "mm"));
+  c.length = readSI(n, rodq::kLength);
+  c.wireRadius = readSI(n, rodq::kWireRadius);
   const double area = M_PI * c.wireRadius * c.wireRadius;
-  const auto density = n.optional("density_g_cm3");
+  const auto density = n.optional(rodq::kDensity.spec.name);
   const auto mass = n.optional("mass_g");
-  if (!density && !mass) n.child("density_g_cm3").expected("a number > 0 (g/cm3), or \"mass_g\" instead");
-  // Densities from air-light foams to the densest metal (osmium, 22.6 g/cm3).
-  if (density) c.massPerLength = units::gcm3ToKgm3(density->number(Bounds{0.01, 30, false, false, "g/cm3"})) * area;
+  if (!density && !mass)
+    n.child(rodq::kDensity.spec.name).expected(boundsOf(rodq::kDensity).describe() + ", or \"mass_g\" instead");
+  if (density) c.massPerLength = readSI(n, rodq::kDensity) * area;
   if (mass) {
     const double perLength = mass->number(Bounds::positive()) * 1e-3 / c.length;  // g -> kg
     if (density && std::abs(perLength - c.massPerLength) > 0.01 * c.massPerLength)
@@ -119,12 +118,12 @@ validation::CoilDef readCoil(const JsonNode& n) {
     c.massPerLength = perLength;
   }
   c.rest = readRest(n.child("rest_shape"), c.length, c.wireRadius);
-  if (auto e = n.optional("young_modulus_gpa")) {
-    c.youngModulus = units::gpaToPa(e->number(Bounds{0, 1000, true, false, "GPa"}));
+  if (n.optional(rodq::kYoungModulus.spec.name)) {
+    c.youngModulus = readSI(n, rodq::kYoungModulus);
     c.hasYoungModulus = true;
   }
-  if (auto nu = n.optional("poisson_ratio")) {
-    c.poissonRatio = nu->number({-1.0, 0.5, true, false, {}});
+  if (n.optional(rodq::kPoissonRatio.spec.name)) {
+    c.poissonRatio = readSI(n, rodq::kPoissonRatio);
     c.hasPoissonRatio = true;
   }
   return c;

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "io/scene.h"
-#include "physics/rod_quantities.h"
+#include "io/quantity_reader.h"
 
 namespace coilsim::io {
 namespace {
@@ -14,9 +14,7 @@ Vec3 toVec3(const std::array<double, 3>& a) { return Vec3(a[0], a[1], a[2]); }
 
 // Bounds of each field, declared once here and quoted in error messages.
 const Bounds kPositive = Bounds::positive();
-// The bounds of a rod quantity (physics/rod_quantities.h), in its edge unit.
-Bounds of(const rodq::Quantity& q) { return {q.spec.min, q.spec.max, q.minOpen, false, q.spec.unit}; }
-double read(const JsonNode& n, const rodq::Quantity& q) { return n.child(q.spec.name).number(of(q)); }
+double read(const JsonNode& n, const rodq::Quantity& q) { return readEdge(n, q); }
 const Bounds kNonNegative = Bounds::nonNegative();
 const Bounds kAny = Bounds::any();
 

@@ -3,6 +3,8 @@
 // degrees) become SI and back. Nothing else in coilsim converts units.
 #include <cmath>
 
+#include "physics/param.h"
+
 namespace coilsim::units {
 
 inline constexpr double kMetresPerMm = 1e-3;
@@ -27,5 +29,9 @@ inline constexpr double nmToNmm(double nm) { return nm / kMetresPerMm; }
 inline constexpr double mmPerSToMPerS(double v) { return v * kMetresPerMm; }
 inline constexpr double degPerSToRadPerS(double w) { return w * kRadPerDeg; }
 inline constexpr double degPerMmToRadPerM(double t) { return t * kRadPerDeg / kMetresPerMm; }
+
+// A declared parameter (effect or rod quantity) between its edge unit and SI.
+inline constexpr double toSI(const ParamSpec& p, double edge) { return edge * p.toSI; }
+inline constexpr double fromSI(const ParamSpec& p, double si) { return si / p.toSI; }
 
 }  // namespace coilsim::units

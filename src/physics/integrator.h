@@ -2,7 +2,7 @@
 // Time stepping and static equilibrium. Both take a Model and a State and
 // change only the State. A refused step leaves the rods as they were before
 // it; a static solve that fails leaves the last converged load increment
-// (what a user wants to look at), and its report says so.
+// (what a user wants to look at), and its report says so (solveStatic).
 #include <string>
 
 #include "physics/model.h"
@@ -42,7 +42,8 @@ struct StaticReport {
   bool converged = false;
   int increments = 0;   // load increments taken (including bisected ones)
   int iterations = 0;   // Newton iterations in all
-  std::string message;  // why it failed
+  std::string message;  // why it failed: the rod, and where it was left
+  double loadFactor = 0;  // of the last rod solved: the last converged increment (1 when converged)
 };
 
 // Static equilibrium under the full load (gravity, loads, effects), reached
@@ -51,8 +52,12 @@ struct StaticReport {
 // detected again before every Newton iteration and act frictionless, with
 // their stiffness between distant nodes (a general sparse solve then) and a
 // penalty smoothed over a thousandth of the contact distance (contact/
-// response.cpp); no iteration carries a segment through another. On failure
-// the State holds the last converged increment and the report says why.
+// response.cpp); no iteration carries a segment through another.
+// On failure: a model it cannot solve (a rod without constraint) is refused
+// before anything changes, so the State is as it was; a rod whose Newton
+// iterations fail keeps its last converged increment (report.loadFactor),
+// the rods before it their equilibrium, those after it their old poses,
+// and the message names the rod and the load factor it was left at.
 StaticReport solveStatic(const Model& model, State& state, const StaticOptions& options = {});
 
 struct Energy {

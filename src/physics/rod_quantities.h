@@ -42,6 +42,12 @@ inline constexpr Quantity kShearFactor{{"shear_factor", "1", "Timoshenko shear f
 inline constexpr Quantity kOuterRadius{
     {"outer_radius_mm", "mm", "outer radius the fluid and walls see", 0.15, 0.0, 5.0, 1e-3}, true};
 
+// Every quantity above, in the order `coilsim help` lists them; a new
+// quantity is declared above and named here.
+inline constexpr const Quantity* kAll[] = {&kLength,  &kWireRadius, &kLoopDiameter, &kPitch,
+                                           &kYoungModulus, &kPoissonRatio, &kDensity, &kArea,
+                                           &kInertia, &kTorsion, &kShearFactor, &kOuterRadius};
+
 // Discretisation and time (bounds the solver honours).
 inline constexpr int kMaxBeams = 20000;           // beams of one rod
 inline constexpr double kMaxTimeStepS = 0.01;     // s: a coil's fastest modes need far less

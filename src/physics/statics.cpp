@@ -217,14 +217,19 @@ NewtonResult newton(const Model& model, int k, State& state, double lambda, cons
 
 StaticReport solveStatic(const Model& model, State& state, const StaticOptions& o) {
   StaticReport rep;
+  // Refusals that need no solve come before any rod is touched, so that a
+  // refused solve leaves the whole State as it was (not the rods before the
+  // bad one solved and their velocities zeroed).
+  for (size_t k = 0; k < model.rods.size(); ++k)
+    if (state.rods[k].active && model.rods[k].constraints.empty()) {
+      rep.message = "rod '" + model.rods[k].name + "' has no constraint: its static equilibrium is not defined";
+      return rep;
+    }
   for (size_t k = 0; k < model.rods.size(); ++k) {
     const RodModel& rm = model.rods[k];
     RodState& r = state.rods[k];
     if (!r.active) continue;
-    if (rm.constraints.empty()) {
-      rep.message = "rod '" + rm.name + "' has no constraint: its static equilibrium is not defined";
-      return rep;
-    }
+    rep.loadFactor = 0;
     std::fill(r.v.begin(), r.v.end(), Vec3::Zero());
     std::fill(r.w.begin(), r.w.end(), Vec3::Zero());
     collectFixedDofs(rm, r);
@@ -239,22 +244,25 @@ StaticReport solveStatic(const Model& model, State& state, const StaticOptions& 
       ++rep.increments;
       if (res == NewtonResult::Converged && checkHealth(model, state).empty()) {
         lambda = next;
+        rep.loadFactor = lambda;
         continue;
       }
       r.x = x0, r.q = q0;
+      const std::string kept = "; it is left at load factor " + std::to_string(lambda);
       if (res == NewtonResult::Singular) {
-        rep.message = "rod '" + rm.name + "': stiffness matrix is singular (is the rod held enough?)";
+        rep.message = "rod '" + rm.name + "': stiffness matrix is singular (is the rod held enough?)" + kept;
         return rep;
       }
       if (++bisections > o.maxBisections) {
         rep.message = "rod '" + rm.name + "': Newton did not converge at load factor " + std::to_string(next) +
-                      " after " + std::to_string(o.maxBisections) + " bisections of the load increment";
+                      " after " + std::to_string(o.maxBisections) + " bisections of the load increment" + kept;
         return rep;
       }
       increment *= 0.5;
     }
   }
   rep.converged = true;
+  rep.loadFactor = 1;
   return rep;
 }
 

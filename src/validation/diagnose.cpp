@@ -203,7 +203,7 @@ Diagnosis diagnose(StageSimulator& sim, const Comparison& cmp, const ModelParams
     if (o.progress) o.progress(s);
   };
   std::vector<std::string> baseFit = o.fit;
-  if (std::find(baseFit.begin(), baseFit.end(), "young_modulus") == baseFit.end())
+  if (std::none_of(baseFit.begin(), baseFit.end(), isYoungModulus))
     baseFit.insert(baseFit.begin(), "young_modulus");
   say("baseline: fitting " + std::to_string(baseFit.size()) + " parameter(s)");
   FitOptions fo;

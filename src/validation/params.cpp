@@ -4,15 +4,64 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "physics/rod_quantities.h"
+
 
 namespace coilsim::validation {
 namespace {
 
+// A rod quantity identification may fit: its declaration (physics/
+// rod_quantities.h: fit name = scene key, unit, SI factor, physical bounds),
+// the name --fit knew it by before, where ModelParams holds it, and what a
+// fit searches: a band narrower than the physical bounds around the file's
+// value, and the prior (params.h).
+struct RodFit {
+  const rodq::Quantity* quantity;
+  std::string_view oldName;
+  double ModelParams::*value;
+  bool helixOnly;
+  void (*band)(const ModelParams& p, const Measurement& m, FitParam& f);
+};
+
+const RodFit kRodFits[] = {
+    {&rodq::kYoungModulus, "young_modulus", &ModelParams::youngModulus, false,
+     [](const ModelParams& p, const Measurement& m, FitParam& f) {
+       const double e0 = m.coil.hasYoungModulus ? m.coil.youngModulus : p.youngModulus;
+       f.prior = {e0 > 0, e0, 0.5 * e0, 2.0 * e0};
+     }},
+    // Metals: 0.28-0.42 (platinum 0.39, nitinol 0.33).
+    {&rodq::kPoissonRatio, "", &ModelParams::poissonRatio, false,
+     [](const ModelParams&, const Measurement& m, FitParam& f) {
+       f.lo = 0.0, f.hi = 0.5;
+       f.prior = {true, m.coil.poissonRatio, 0.28, 0.42};
+     }},
+    // Shape-set loops relax or tighten a little after heat setting: +-15 %.
+    {&rodq::kLoopDiameter, "loop_diameter", &ModelParams::loopDiameter, true,
+     [](const ModelParams& p, const Measurement& m, FitParam& f) {
+       const double d0 = m.coil.rest.loopDiameter;
+       f.lo = 0.5 * p.loopDiameter, f.hi = 2.0 * p.loopDiameter;
+       f.prior = {true, d0, 0.85 * d0, 1.15 * d0};
+     }},
+    {&rodq::kPitch, "pitch", &ModelParams::pitch, true,
+     [](const ModelParams& p, const Measurement& m, FitParam& f) {
+       const double h0 = m.coil.rest.pitch;
+       f.lo = 0.0, f.hi = 3.0 * p.pitch + 1e-3;
+       f.prior = {true, h0, std::max(0.0, 0.85 * h0 - 0.1e-3), 1.15 * h0 + 0.1e-3};
+     }},
+};
+
+const RodFit* rodFit(const std::string& name) {
+  for (const RodFit& r : kRodFits)
+    if (name == r.quantity->spec.name || (!r.oldName.empty() && name == r.oldName)) return &r;
+  return nullptr;
+}
+
 // "effect.param" -> the effect use and the index of its parameter, or nullptr.
-const EffectUse* effectParam(const ModelParams& p, const std::string& name, size_t& index) {
+template <class Params>
+auto effectParam(Params& p, const std::string& name, size_t& index) -> decltype(p.effect(name)) {
   const size_t dot = name.find('.');
   if (dot == std::string::npos) return nullptr;
-  const EffectUse* e = p.effect(name.substr(0, dot));
+  auto* e = p.effect(name.substr(0, dot));
   if (!e) return nullptr;
   const auto specs = e->effect->params();
   for (size_t i = 0; i < specs.size(); ++i)
@@ -25,26 +74,38 @@ const EffectUse* effectParam(const ModelParams& p, const std::string& name, size
 
 }  // namespace
 
+std::string canonicalFitName(const std::string& name) {
+  const RodFit* r = rodFit(name);
+  return r ? std::string(r->quantity->spec.name) : name;
+}
+
+std::string oldFitNameNote(const std::string& name) {
+  const RodFit* r = rodFit(name);
+  if (!r || name != r->oldName) return {};
+  return "--fit " + name + " is the old name of " + std::string(r->quantity->spec.name) +
+         " (the scene file's key); both fit the same quantity";
+}
+
+std::vector<const rodq::Quantity*> rodFitQuantities() {
+  std::vector<const rodq::Quantity*> out;
+  for (const RodFit& r : kRodFits) out.push_back(r.quantity);
+  return out;
+}
+
 std::optional<FitParam> describeParam(const std::string& name, const ModelParams& p, const Measurement& m,
                                       std::string& why) {
-  const bool helix = m.coil.rest.type == RestShapeDef::Type::Helix;
-  if (name == "young_modulus") {
-    const double e0 = m.coil.hasYoungModulus ? m.coil.youngModulus : p.youngModulus;
-    return FitParam{name, "GPa", 1e9, 0.05e9, 1000e9, true, {e0 > 0, e0, 0.5 * e0, 2.0 * e0}};
-  }
-  // Metals: 0.28-0.42 (platinum 0.39, nitinol 0.33).
-  if (name == "poisson_ratio") return FitParam{name, "1", 1, 0.0, 0.5, false, {true, m.coil.poissonRatio, 0.28, 0.42}};
-  if (name == "loop_diameter" || name == "pitch") {
-    if (!helix) {
+  if (const RodFit* r = rodFit(name)) {
+    const ParamSpec& s = r->quantity->spec;
+    if (r->helixOnly && m.coil.rest.type != RestShapeDef::Type::Helix) {
       why = name + " needs a helical rest shape";
       return std::nullopt;
     }
-    // Shape-set loops relax or tighten a little after heat setting: +-15 %.
-    const double d0 = m.coil.rest.loopDiameter, h0 = m.coil.rest.pitch;
-    if (name == "loop_diameter")
-      return FitParam{name, "mm", 1e-3, 0.5 * p.loopDiameter, 2.0 * p.loopDiameter, false, {true, d0, 0.85 * d0, 1.15 * d0}};
-    return FitParam{name, "mm", 1e-3, 0.0, 3.0 * p.pitch + 1e-3, false,
-                    {true, h0, std::max(0.0, 0.85 * h0 - 0.1e-3), 1.15 * h0 + 0.1e-3}};
+    const bool wide = s.min > 0 && s.max / s.min > 100;
+    FitParam f{name, std::string(s.unit), s.toSI, s.min * s.toSI, s.max * s.toSI, wide, {}};
+    r->band(p, m, f);
+    // The search band never leaves what is physical.
+    f.lo = std::max(f.lo, s.min * s.toSI), f.hi = std::min(f.hi, s.max * s.toSI);
+    return f;
   }
   size_t k = 0;
   if (const EffectUse* e = effectParam(p, name, k)) {
@@ -57,8 +118,9 @@ std::optional<FitParam> describeParam(const std::string& name, const ModelParams
           f.prior = {true, std::clamp(fs.typical, fs.plausibleLow, fs.plausibleHigh), fs.plausibleLow, fs.plausibleHigh};
     return f;
   }
-  why = "unknown parameter \"" + name +
-        "\" (known: young_modulus, poisson_ratio, loop_diameter, pitch, or EFFECT.PARAM of an effect switched on)";
+  std::string known;
+  for (const RodFit& r : kRodFits) known.append(r.quantity->spec.name).append(", ");
+  why = "unknown parameter \"" + name + "\" (known: " + known + "or EFFECT.PARAM of an effect switched on)";
   return std::nullopt;
 }
 
@@ -74,26 +136,21 @@ double priorDeviation(const FitParam& f, double v) {
 }
 
 double getParam(const ModelParams& p, const std::string& name) {
-  if (name == "young_modulus") return p.youngModulus;
-  if (name == "poisson_ratio") return p.poissonRatio;
-  if (name == "loop_diameter") return p.loopDiameter;
-  if (name == "pitch") return p.pitch;
+  if (const RodFit* r = rodFit(name)) return p.*(r->value);
   size_t k = 0;
   if (const EffectUse* e = effectParam(p, name, k)) return e->values[k];
   throw std::invalid_argument("unknown parameter " + name);
 }
 
 void setParam(ModelParams& p, const std::string& name, double v) {
-  if (name == "young_modulus") p.youngModulus = v;
-  else if (name == "poisson_ratio") p.poissonRatio = v;
-  else if (name == "loop_diameter") p.loopDiameter = v;
-  else if (name == "pitch") p.pitch = v;
-  else {
-    size_t k = 0;
-    const EffectUse* e = effectParam(p, name, k);
-    if (!e) throw std::invalid_argument("unknown parameter " + name);
-    const_cast<EffectUse*>(e)->values[k] = v;
+  if (const RodFit* r = rodFit(name)) {
+    p.*(r->value) = v;
+    return;
   }
+  size_t k = 0;
+  EffectUse* e = effectParam(p, name, k);
+  if (!e) throw std::invalid_argument("unknown parameter " + name);
+  e->values[k] = v;
 }
 
 SetupHint setupHint(const Measurement& m) { return {m.mediumDensity, m.mediumViscosity}; }

@@ -1,12 +1,15 @@
 #pragma once
-// Parameters identification may fit, declared once: name, edge unit, bounds.
-// Model parameters: young_modulus (GPa), poisson_ratio, loop_diameter (mm),
-// pitch (mm). Effect parameters: "<effect>.<param>" with the effect's own
-// ParamSpec (e.g. drag.viscosity_pa_s); the effect must be switched on.
+// Parameters identification may fit. Rod quantities under their scene keys,
+// with unit, SI factor and physical bounds from physics/rod_quantities.h:
+// young_modulus_gpa, poisson_ratio, loop_diameter_mm, pitch_mm (the old
+// names young_modulus, loop_diameter and pitch are accepted too). Effect
+// parameters: "<effect>.<param>" with the effect's own ParamSpec (e.g.
+// drag.viscosity_pa_s); the effect must be switched on.
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "physics/rod_quantities.h"
 #include "validation/simulate.h"
 
 namespace coilsim::validation {
@@ -42,8 +45,22 @@ double priorDeviation(const FitParam& f, double value);
 // (unknown name, effect not switched on, no rest shape with that parameter).
 std::optional<FitParam> describeParam(const std::string& name, const ModelParams& p, const Measurement& m,
                                       std::string& why);
+// The value (SI) of a parameter describeParam accepts; throws
+// std::invalid_argument naming an unknown one.
 double getParam(const ModelParams& p, const std::string& name);
 void setParam(ModelParams& p, const std::string& name, double si);
+
+// The scene key a fit name stands for (young_modulus -> young_modulus_gpa);
+// any other name unchanged. Two names fit the same parameter when these agree.
+std::string canonicalFitName(const std::string& name);
+// True for either name of the coil's Young's modulus, which diagnosis always fits.
+inline bool isYoungModulus(const std::string& name) {
+  return canonicalFitName(name) == canonicalFitName("young_modulus");
+}
+// One line for a user who typed an old fit name, else empty.
+std::string oldFitNameNote(const std::string& name);
+// The rod quantities identification can fit, in help order.
+std::vector<const rodq::Quantity*> rodFitQuantities();
 
 // What an effect may read of the measurement's setup (the medium).
 SetupHint setupHint(const Measurement& m);

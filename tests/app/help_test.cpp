@@ -11,6 +11,7 @@
 
 #include "app/commands.h"
 #include "app/run_binary.h"
+#include "physics/rod_quantities.h"
 
 namespace apptest {
 namespace {
@@ -41,6 +42,26 @@ TEST(Help, MainHelpListsTheOptionsOfPracticePlanAndValidate) {
   for (const char* name : {"practice", "plan", "validate"})
     for (const OptionSpec& o : coilsim::app::findCommand(name)->options) EXPECT_CONTAINS(r.out, std::string(o.name));
   EXPECT_EQ(coilsim({"--help"}, dir).out, r.out);
+}
+
+// Each rod quantity's key, unit and range come from its one declaration;
+// the same key is the scene file's (the reference: a shipped scene).
+TEST(Help, ListsEveryRodQuantityWithUnitAndRange) {
+  const fs::path dir = scratch("help_rod_quantities");
+  const Exec r = coilsim({"help"}, dir);
+  ASSERT_EQ(r.code, 0);
+  EXPECT_CONTAINS(r.out, "rod quantities:");
+  for (const coilsim::rodq::Quantity* q : coilsim::rodq::kAll) {
+    const std::string name(q->spec.name);
+    const size_t at = r.out.find("\n  " + name + " ");
+    ASSERT_NE(at, std::string::npos) << name;
+    const std::string line = r.out.substr(at + 1, r.out.find('\n', at + 1) - at - 1);
+    EXPECT_CONTAINS(line, std::string(q->spec.unit));
+    EXPECT_CONTAINS(line, std::string(q->spec.description));
+  }
+  EXPECT_CONTAINS(coilsim({"validate", "--help"}, dir).out, "young_modulus_gpa  *");
+  const std::string sceneText = slurp(scene("cantilever-static.json"));
+  for (const char* key : {"\"young_modulus_gpa\"", "\"length_mm\"", "\"density_g_cm3\""}) EXPECT_CONTAINS(sceneText, key);
 }
 
 TEST(Help, AnOptionIsNeverTakenAsAValueByTheBinary) {

@@ -13,6 +13,7 @@ TEST(ValidateCommand, ControlFileReportHasTheIssuesFields) {
   const Exec r = coilsim({"validate", kControl, "--fit", "young_modulus", "--out", (dir / "out").string()}, dir);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_CONTAINS(r.err, "fit: evaluation");  // progress on stderr
+  EXPECT_CONTAINS(r.err, "--fit young_modulus is the old name of young_modulus_gpa");
   const nlohmann::json j = readJson(dir / "out" / "report.json");
   ASSERT_EQ(j["stages"].size(), 3u);
   for (const auto& s : j["stages"]) {

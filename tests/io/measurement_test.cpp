@@ -6,9 +6,11 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "io/expect_error.h"
+#include "io/scene.h"
 
 namespace coilsim::io {
 namespace {
@@ -135,8 +137,10 @@ TEST(Measurement, BadFilesNameFilePathAndExpectation) {
   const BadCase cases[] = {
       {R"("coil-measurement/1")", R"("coil-measurement/2")", "/format", "coil-measurement/1"},
       {R"("length_mm": 150.0,)", "", "/coil/length_mm", "missing"},
-      {R"("length_mm": 150.0)", R"("length_mm": "150")", "/coil/length_mm", "number > 0"},
-      {R"("wire_radius_mm": 0.3556)", R"("wire_radius_mm": -1)", "/coil/wire_radius_mm", "> 0"},
+      {R"("length_mm": 150.0)", R"("length_mm": "150")", "/coil/length_mm", "number in (0, 2000] mm"},
+      {R"("wire_radius_mm": 0.3556)", R"("wire_radius_mm": -1)", "/coil/wire_radius_mm", "in (0, 5] mm"},
+      {R"("loop_diameter_mm": 7.0)", R"("loop_diameter_mm": 0.5)", "/coil/rest_shape/loop_diameter_mm",
+       "from the wire diameter 0.7112 mm"},
       {R"("density_g_cm3": 21.45,)", "", "/coil/density_g_cm3", "mass_g"},
       {R"("handedness": "left")", R"("handedness": "up")", "/coil/rest_shape/handedness", "right"},
       {R"("gravity_m_s2": [0.0, 0.0, -9.81])", R"("gravity_m_s2": [0.0, -9.81])", "/setup/gravity_m_s2", "[x, y, z]"},
@@ -158,6 +162,41 @@ TEST(Measurement, BadFilesNameFilePathAndExpectation) {
     EXPECT_CONTAINS(message, "bad.json");
     EXPECT_CONTAINS(message, c.path);
     EXPECT_CONTAINS(message, c.expectation);
+  }
+}
+
+// A rod quantity is declared once (physics/rod_quantities.h): a measurement
+// refuses what a scene refuses, with the same key and the same bounds text.
+// The reference is the scene reader given the same bad value.
+TEST(Measurement, RodQuantitiesAreBoundedAsInASceneFile) {
+  struct Case {
+    std::string from, to, path, sceneKey, sceneValue;
+  };
+  const Case cases[] = {
+      {R"("density_g_cm3": 21.45)", R"("density_g_cm3": 0.2)", "/coil/density_g_cm3", "density_g_cm3", "0.2"},
+      {R"("young_modulus_gpa": 7.5)", R"("young_modulus_gpa": 2000)", "/coil/young_modulus_gpa", "young_modulus_gpa",
+       "2000"},
+      {R"("length_mm": 150.0)", R"("length_mm": 2500)", "/coil/length_mm", "length_mm", "2500"},
+  };
+  const std::string scene = std::string(COILSIM_SOURCE_DIR) + "/scenes/cantilever-static.json";
+  std::ifstream in(scene);
+  ASSERT_TRUE(in) << scene;
+  const std::string sceneText((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.path);
+    const std::string message = errorOf([&] { parseMeasurement(with(c.from, c.to), "bad.json"); });
+    EXPECT_CONTAINS(message, c.path);
+    // The same value in the scene's rod: the scene reader's words for it.
+    const std::string key = "\"" + c.sceneKey + "\": ";
+    const size_t at = sceneText.find(key);
+    ASSERT_NE(at, std::string::npos) << key;
+    std::string bad = sceneText;
+    bad.replace(at + key.size(), bad.find_first_of(",}\n", at + key.size()) - at - key.size(), c.sceneValue);
+    const std::string sceneMessage = errorOf([&] { sceneFromText(bad, "s.json"); });
+    const size_t expected = sceneMessage.find("expected ");
+    ASSERT_NE(expected, std::string::npos) << sceneMessage;
+    const std::string words = sceneMessage.substr(expected, sceneMessage.find(", got", expected) - expected);
+    EXPECT_CONTAINS(message, words);
   }
 }
 

@@ -85,5 +85,61 @@ TEST(StaticsTest, RefusesARodWithoutConstraintAndKeepsTheState) {
   EXPECT_EQ(s.rods[0].x, before);
 }
 
+TEST(StaticsTest, ARefusedSolveLeavesEveryRodAsItWas) {
+  // A clamped wire that gravity would bend, moving, beside a free one: the
+  // free rod makes the model unsolvable, so nothing may change, not even the
+  // clamped rod listed first (its poses and its velocities).
+  const Section s = circularSection(1e-3, kSteelPoisson);
+  RodDef held = clamped(straightRod(0.1, 4, steel(), s));
+  RodDef loose = straightRod(0.1, 4, steel(), s);
+  loose.name = "loose";
+  const Model m = compileModel(modelOf({held, loose}, {"gravity"}, Vec3(0, 0, -9.81)));
+  State st = makeState(m);
+  for (Vec3& v : st.rods[0].v) v = Vec3(0, 0, -0.01);
+  const State before = st;
+  const StaticReport rep = solveStatic(m, st);
+  EXPECT_FALSE(rep.converged);
+  EXPECT_NE(rep.message.find("'loose'"), std::string::npos) << rep.message;
+  for (size_t k = 0; k < st.rods.size(); ++k) {
+    EXPECT_EQ(st.rods[k].x, before.rods[k].x) << "rod " << k;
+    EXPECT_EQ(st.rods[k].v, before.rods[k].v) << "rod " << k;
+    for (size_t i = 0; i < st.rods[k].q.size(); ++i)
+      EXPECT_EQ(st.rods[k].q[i].coeffs(), before.rods[k].q[i].coeffs()) << "rod " << k << " node " << i;
+  }
+}
+
+TEST(StaticsTest, ANewtonFailureKeepsTheLastConvergedIncrementAndSaysWhich) {
+  // The sagging wire of the test above (w L^3 / EI = 1.2) allowed one Newton
+  // iteration and no bisection: the first increment (the full load) cannot
+  // converge from the straight rod, so the last converged increment is load
+  // factor 0, the unloaded clamped rod at rest, at rest.
+  const double length = 0.2;
+  const int beams = 20;
+  const Model m = compileModel(modelOf({clamped(straightRod(length, beams, steel(), circularSection(1e-4, kSteelPoisson)))},
+                                       {"gravity"}, Vec3(0, 0, -9.81)));
+  State st = makeState(m);
+  const std::vector<Vec3> rest = st.rods[0].x;
+  for (Vec3& v : st.rods[0].v) v = Vec3(0, 0, -0.01);
+  StaticOptions o;
+  o.loadSteps = 1;
+  o.maxIterations = 1;
+  o.maxBisections = 0;
+  const StaticReport rep = solveStatic(m, st, o);
+  EXPECT_FALSE(rep.converged);
+  EXPECT_EQ(rep.loadFactor, 0.0);
+  EXPECT_NE(rep.message.find("left at load factor 0"), std::string::npos) << rep.message;
+  EXPECT_EQ(st.rods[0].x, rest);
+  for (const Vec3& v : st.rods[0].v) EXPECT_EQ(v, Vec3::Zero());
+}
+
+TEST(StaticsTest, AConvergedSolveReportsTheFullLoad) {
+  const Model m = compileModel(modelOf({clamped(straightRod(0.2, 20, steel(), circularSection(1e-4, kSteelPoisson)))},
+                                       {"gravity"}, Vec3(0, 0, -9.81)));
+  State st = makeState(m);
+  const StaticReport rep = solveStatic(m, st, tightStatic(4));
+  ASSERT_TRUE(rep.converged) << rep.message;
+  EXPECT_EQ(rep.loadFactor, 1.0);
+}
+
 }  // namespace
 }  // namespace coilsim::test
