@@ -4,13 +4,11 @@
 #include <cstdio>
 #include <string>
 
+#include "validation/text.h"
+
 namespace coilsim::app {
 
-inline std::string fmt(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
+using validation::fmt;  // one number through a printf format, as the reports word it
 
 // A unit after a number: " GPa", nothing for a ratio (unit "1").
 inline std::string unitSuffix(const std::string& unit) { return unit.empty() || unit == "1" ? "" : " " + unit; }

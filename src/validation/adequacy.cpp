@@ -1,20 +1,11 @@
 #include "validation/adequacy.h"
+#include "validation/text.h"
 
 #include <cmath>
 #include <cstdio>
 #include <random>
 
 namespace coilsim::validation {
-namespace {
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
-}  // namespace
-
 namespace {
 
 // Mean and SD over replicas of the mean squared node residual that a model

@@ -6,22 +6,11 @@
 #include <cstdio>
 
 #include "validation/params.h"
+#include "validation/significance.h"
+#include "validation/text.h"
 
 namespace coilsim::validation {
 namespace {
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
-// chi^2_p quantile at 0.999 divided by p: the F(p, inf) critical value.
-double fCritical(int p) {
-  static const double q[] = {10.83, 13.82, 16.27, 18.47, 20.52, 22.46};
-  p = std::clamp(p, 1, 6);
-  return q[p - 1] / p;
-}
 
 // A finding must explain at least this share of the baseline residual: a
 // candidate that trims a few per cent off a residual left by something else

@@ -5,21 +5,11 @@
 #include <cstdio>
 
 #include "validation/params.h"
+#include "validation/significance.h"
+#include "validation/text.h"
 
 namespace coilsim::validation {
 namespace {
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
-// chi^2_p quantile at 0.999 divided by p: the F(p, inf) critical value.
-double fCritical(int p) {
-  static const double q[] = {10.83, 13.82, 16.27, 18.47, 20.52, 22.46};
-  return q[std::clamp(p, 1, 6) - 1] / std::clamp(p, 1, 6);
-}
 
 std::vector<FitMember> membersOf(const std::vector<JointFile>& files, const std::vector<ModelParams>& starts) {
   std::vector<FitMember> out;
