@@ -164,7 +164,7 @@ if a != b:
             if ca.get(k) != cb.get(k): print(f"  {ca.get('name')}: {k}: merged {ca.get(k)} single {cb.get(k)}")
     sys.exit(f"{sys.argv[1]} differs from {sys.argv[2]}")
 print(f"{sys.argv[1]}: equal to the single-machine plan ({len(a['coils'])} runs, packing "
-      + ", ".join(f"{100 * c['packing_density']:.2f} %" for c in a["coils"]) + ")")
+      + ", ".join(f"{c['packing_percent']:.2f} %" for c in a["coils"]) + ")")
 PY
 done
 [ "$status" -eq 0 ] || fail "a merged plan differs from the single-machine run"
