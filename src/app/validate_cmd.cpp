@@ -26,6 +26,15 @@ namespace {
 using nlohmann::ordered_json;
 using namespace validation;
 
+// Why one of the `fit` names cannot be fitted for `m` from `start` (empty: all can).
+std::string unknownFitName(const std::vector<std::string>& fit, const ModelParams& start, const Measurement& m) {
+  for (const std::string& f : fit) {
+    std::string why;
+    if (!describeParam(f, start, m, why)) return why;
+  }
+  return "";
+}
+
 int usage(const std::string& message) {
   std::fprintf(stderr,
                "coilsim validate: %s\n"
@@ -374,10 +383,7 @@ int runValidateJoint(const WorkbenchArgs& a) {
       starts.push_back(p);
     }
     fit = expandFitNames(a.fit, ms[0]);
-    for (const std::string& f : fit) {
-      std::string why;
-      if (!describeParam(f, starts[0], ms[0], why)) return usage("--fit: " + why);
-    }
+    if (const std::string why = unknownFitName(fit, starts[0], ms[0]); !why.empty()) return usage("--fit: " + why);
   } catch (const io::InputError& e) {
     std::fprintf(stderr, "coilsim: %s\n", e.what());
     return kExitUsage;
@@ -491,10 +497,7 @@ int runValidate(const std::vector<std::string>& args) {
     base = start = ModelParams::nominal(m);
     for (const std::string& e : a.effects) start.effects.push_back(effectFromFile(e, m));
     fit = expandFitNames(a.fit, m);
-    for (const std::string& f : fit) {
-      std::string why;
-      if (!describeParam(f, start, m, why)) return usage("--fit: " + why);
-    }
+    if (const std::string why = unknownFitName(fit, start, m); !why.empty()) return usage("--fit: " + why);
   } catch (const io::InputError& e) {
     std::fprintf(stderr, "coilsim: %s\n", e.what());
     return kExitUsage;
