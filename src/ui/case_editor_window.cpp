@@ -21,6 +21,7 @@
 #include "ui/case_editor_controls.h"
 #include "ui/imgui_layer.h"
 #include "ui/realtime.h"
+#include "ui/offscreen_context.h"
 
 namespace coilsim::ui {
 namespace {
@@ -278,13 +279,7 @@ int runCaseEditorWindow(const CaseEditorHooks& hooks, const CaseEditorWindowOpti
 }
 
 bool renderCaseEditorOffscreen(const CaseEditorHooks& hooks, const CaseEditorWindowOptions& o, std::string& error) {
-  if (o.screenshotPath.empty()) {
-    error = "no screenshot path given for the off-screen render";
-    return false;
-  }
-  render::BackendOptions bo;
-  bo.width = o.width, bo.height = o.height;
-  auto backend = render::createBackend("osmesa", bo, error);
+  const auto backend = offscreenContext(o.screenshotPath, o.width, o.height, error);
   if (!backend) return false;
   auto f = std::make_unique<Frame>();
   if (!f->renderer.init(error) || !f->imgui.init(nullptr, error)) return false;
@@ -293,11 +288,7 @@ bool renderCaseEditorOffscreen(const CaseEditorHooks& hooks, const CaseEditorWin
   for (int k = 0; k < 2; ++k)
     if (!drawFrame(*f, c, o.width, o.height, 1.0 / 60.0, error)) return false;
   render::Image image;
-  if (!f->renderer.readFrame(image)) {
-    error = "could not read the off-screen frame back";
-    return false;
-  }
-  return writePicture(image, o.screenshotPath, error);
+  return readBackFrame(f->renderer, image, error) && writePicture(image, o.screenshotPath, error);
 }
 
 }  // namespace coilsim::ui

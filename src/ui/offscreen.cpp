@@ -7,6 +7,7 @@
 #include "ui/frame.h"
 #include "ui/layout_dump.h"
 #include "ui/viewer.h"
+#include "ui/offscreen_context.h"
 
 namespace coilsim::ui {
 
@@ -16,14 +17,7 @@ bool renderOffscreen(const Model& model, const State& state, const ViewerOptions
     error = "unknown view '" + options.view + "' (expected 3d, xray or biplane)";
     return false;
   }
-  if (options.screenshotPath.empty()) {
-    error = "no screenshot path given for the off-screen render";
-    return false;
-  }
-  render::BackendOptions bo;
-  bo.width = options.width;
-  bo.height = options.height;
-  auto backend = render::createBackend("osmesa", bo, error);
+  const auto backend = offscreenContext(options.screenshotPath, options.width, options.height, error);
   if (!backend) return false;
   render::Renderer renderer;
   if (!renderer.init(error)) return false;
@@ -55,11 +49,7 @@ bool renderOffscreen(const Model& model, const State& state, const ViewerOptions
   layout.begin(float(options.width), float(options.height));
   if (!drawFrame(parts, options.width, options.height, 1.0 / 60.0, error) || !layout.write(error)) return false;
   render::Image image;
-  if (!renderer.readFrame(image)) {
-    error = "could not read the off-screen frame back";
-    return false;
-  }
-  return render::writePng(options.screenshotPath, image, error);
+  return readBackFrame(renderer, image, error) && render::writePng(options.screenshotPath, image, error);
 }
 
 }  // namespace coilsim::ui

@@ -26,6 +26,7 @@
 #include "ui/realtime.h"
 #include "ui/validation_charts.h"
 #include "ui/views.h"
+#include "ui/offscreen_context.h"
 
 namespace coilsim::ui {
 namespace {
@@ -400,13 +401,7 @@ int runValidationWindow(const ValidationHooks& hooks, const ValidationWindowOpti
 }
 
 bool renderValidationOffscreen(const ValidationHooks& hooks, const ValidationWindowOptions& o, std::string& error) {
-  if (o.screenshotPath.empty()) {
-    error = "no screenshot path given for the off-screen render";
-    return false;
-  }
-  render::BackendOptions bo;
-  bo.width = o.width, bo.height = o.height;
-  auto backend = render::createBackend("osmesa", bo, error);
+  const auto backend = offscreenContext(o.screenshotPath, o.width, o.height, error);
   if (!backend) return false;
   auto f = std::make_unique<Frame>();
   if (!f->renderer.init(error) || !f->imgui.init(nullptr, error)) return false;
@@ -418,11 +413,7 @@ bool renderValidationOffscreen(const ValidationHooks& hooks, const ValidationWin
   for (int k = 0; k < 2; ++k)
     if (!drawFrame(*f, w, o.width, o.height, 1.0 / 60.0, error)) return false;
   render::Image image;
-  if (!f->renderer.readFrame(image)) {
-    error = "could not read the off-screen frame back";
-    return false;
-  }
-  if (!writeImage(image, o.screenshotPath, error)) return false;
+  if (!readBackFrame(f->renderer, image, error) || !writeImage(image, o.screenshotPath, error)) return false;
   if (!w.after().ok) {
     error = "the fit failed: " + w.after().message;
     return false;
