@@ -27,7 +27,8 @@ namespace {
 
 constexpr double kCoilLength = 0.3;  // m of coil in the sac: 8.5 % packing, 600 segments
 
-// Squared distance between segments p0-p1 and q0-q1 (Ericson 5.1.9, clamped).
+// Distance between segments p0-p1 and q0-q1 (Ericson 5.1.9, clamped; the textbook form, written here without
+// the contact code's handling of near-parallel pairs).
 double segmentDistance(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
   const Vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
   const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r), c = d1.dot(r), b = d1.dot(d2);
