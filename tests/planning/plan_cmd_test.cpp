@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -15,8 +17,13 @@ namespace fs = std::filesystem;
 const std::string kBinary = COILSIM_BINARY;
 const std::string kSource = COILSIM_SOURCE_DIR;
 
+// A path of this process alone: ctest runs these tests in parallel processes, and builds side by side run them too.
+fs::path scratch(const std::string& name) {
+  return fs::path(testing::TempDir()) / (name + "." + std::to_string(::getpid()));
+}
+
 int run(const std::string& args, std::string* output = nullptr) {
-  const std::string log = (fs::temp_directory_path() / "coilsim-plan-test.log").string();
+  const std::string log = scratch("coilsim-plan-test.log").string();
   const int status = std::system((kBinary + " " + args + " > " + log + " 2>&1").c_str());
   if (output) {
     std::ifstream in(log);
@@ -34,7 +41,7 @@ bool haveUi() {
 }
 
 TEST(PlanCommand, TwoCoilsGiveTheTableAndTheImages) {
-  const fs::path out = fs::temp_directory_path() / "coilsim-plan-test";
+  const fs::path out = scratch("coilsim-plan-test");
   fs::remove_all(out);
   std::string log;
   const int code = run("plan " + kSource + "/scenes/cases/sphere-7mm-wide-neck.json --coils finishing-2x10,finishing-3x40 " +
@@ -79,7 +86,7 @@ TEST(PlanCommand, TwoCoilsGiveTheTableAndTheImages) {
   EXPECT_TRUE(fs::exists(out / "plan.md"));
 
   // Two halves of a sweep merge into one table.
-  const fs::path out2 = fs::temp_directory_path() / "coilsim-plan-test-merged";
+  const fs::path out2 = scratch("coilsim-plan-test-merged");
   fs::remove_all(out2);
   ASSERT_EQ(run("plan-merge " + out.string() + " " + out.string() + " --out " + out2.string(), &log), 0) << log;
   std::ifstream in2(out2 / "plan.json");
@@ -96,9 +103,8 @@ nlohmann::json readPlan(const fs::path& dir) {
 TEST(PlanCommand, SequenceKeepsEarlierCoilsAndMergeEqualsOneRun) {
   const std::string c = kSource + "/scenes/cases/sphere-7mm-wide-neck.json";
   const std::string opts = " --speed 10 --no-screenshots --out ";
-  const fs::path tmp = fs::temp_directory_path();
-  const fs::path one = tmp / "coilsim-plan-seq-one", a = tmp / "coilsim-plan-seq-a", b = tmp / "coilsim-plan-seq-b",
-                 merged = tmp / "coilsim-plan-seq-merged";
+  const fs::path one = scratch("coilsim-plan-seq-one"), a = scratch("coilsim-plan-seq-a"), b = scratch("coilsim-plan-seq-b"),
+                 merged = scratch("coilsim-plan-seq-merged");
   for (const fs::path& d : {one, a, b, merged}) fs::remove_all(d);
   std::string log;
   // One run of two candidates on two threads: a coil, and the same coil twice in a row.
@@ -136,7 +142,7 @@ TEST(PlanCommand, SequenceKeepsEarlierCoilsAndMergeEqualsOneRun) {
 TEST(PlanCommand, ACoilThatMeetsResistanceEverywhereIsReportedNotPlaced) {
   // A threshold of 1 uN: any load on the tip is "resistance". The operator twists three times,
   // pulls back and re-advances three times, then gives the coil up instead of pushing for ever.
-  const fs::path out = fs::temp_directory_path() / "coilsim-plan-not-placed";
+  const fs::path out = scratch("coilsim-plan-not-placed");
   fs::remove_all(out);
   std::string log;
   ASSERT_EQ(run("plan " + kSource + "/scenes/cases/sphere-7mm-wide-neck.json --coils finishing-2x10 --speed 10 " +
@@ -181,7 +187,7 @@ TEST(PlanCommand, BadInputExitsTwoNamingTheProblem) {
 }
 
 TEST(PracticeCommand, ReplayWritesTheSameScoreSheet) {
-  const fs::path dir = fs::temp_directory_path() / "coilsim-practice-test";
+  const fs::path dir = scratch("coilsim-practice-test");
   fs::remove_all(dir);
   fs::create_directories(dir);
   {

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include "io/json_writer.h"
 #include "io/timeline.h"
 
@@ -49,7 +51,7 @@ TEST(Practice, ScoreFollowsTheInputsAndReplayReproducesItExactly) {
   EXPECT_TRUE(live.wallForcesAvailable);
   EXPECT_LT(live.maxWallForce, pc.goal.maxWallForce);
 
-  const std::string path = (std::filesystem::temp_directory_path() / "coilsim-practice-session.json").string();
+  const std::string path = (std::filesystem::path(testing::TempDir()) / ("coilsim-practice-session." + std::to_string(::getpid()) + ".json")).string();
   io::writeFileAtomic(path, io::formatJson(recording));
   const SessionRecording s = loadSession(path);
   std::filesystem::remove(path);
