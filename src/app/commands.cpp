@@ -117,6 +117,7 @@ constexpr std::array kPractice{
     value("--record", K::OutFile, "SESSION", "write the session, to replay it"),
     value("--screenshot", K::OutFile, "PNG", "a picture of the last frame with the read-outs"),
     value("--out", K::OutFile, "SCORE", "write the score sheet (JSON)"),
+    size("--size", "WxH", "window or picture size in pixels (default 1280x720)", 16, 16384),
     kQuiet,
 };
 
@@ -198,10 +199,10 @@ constexpr std::array kCommands{
                 "exit codes: 0 ok, 2 a directory holds no coilsim-plan/1 plan.json"},
     CommandSpec{"practice", "play or replay a practice session, write its score sheet (docs/planning.md)",
                 "practice CASE --coil NAME --input TIMELINE [--view V] [--views T:VIEW,...] [--duration S]\n"
-                "         [--record SESSION] [--screenshot PNG] --out SCORE\n"
-                "practice CASE --replay SESSION [--screenshot PNG] --out SCORE\n"
+                "         [--record SESSION] [--screenshot PNG] [--size WxH] --out SCORE\n"
+                "practice CASE --replay SESSION [--screenshot PNG] [--size WxH] --out SCORE\n"
                 "practice CASE --window [--coil NAME] [--view V] [--record SESSION] [--out SCORE]\n"
-                "         [--input TIMELINE] [--views T:VIEW,...] [--duration S] [--screenshot PNG]",
+                "         [--input TIMELINE] [--views T:VIEW,...] [--duration S] [--screenshot PNG] [--size WxH]",
                 "CASE", K::JsonFile, 1, 1, kPractice, "exit codes: 0 ok, 1 a step was refused, 2 bad input"},
     CommandSpec{"validate", "the model against a measured coil (docs/validation.md)",
                 "validate FILE... [--effects a,b] [--fit young_modulus_gpa,...] --out DIR [options]   (several: jointly)\n"

@@ -69,6 +69,22 @@ def offscreen_sections(size):
     return json.load(open(dump))["sections"] if os.path.exists(dump) else None
 
 
+def practice_window_size():
+    """practice --window --size 1920x1080 opens at that size, and the panel fits."""
+    dump = f"{out}/layout-practice-size.json"
+    win = Window([coilsim, "practice", case, "--window", "--coil", "finishing-2x10", "--size", "1920x1080"], display,
+                 dump, out)
+    try:
+        first = win.wait("the practice window's first frames", lambda l: "detach" in l["items"])
+        check(first["window"] == [1920, 1080], f"practice --size 1920x1080 opens a {first['window']} window")
+        fits(first, "practice window 1920x1080")
+        win.key("Escape")
+        code, _, err = win.close()
+        check(code == 0, f"practice window 1920x1080: Esc closes it (exit {code}) {err.strip()[-200:]}")
+    finally:
+        win.kill()
+
+
 def practice_refusal_and_help():
     """The coil is inside: D is refused without asking; F1 shows the help."""
     dump = f"{out}/layout-practice-a.json"
@@ -169,6 +185,7 @@ for size in ("1280x720", "1920x1080"):
     picture = offscreen_sections(size)
     check(window == picture and "read-outs" in (window or ""),
           f"{size}: the off-screen picture's panel sections {picture!r} are the window's {window!r}")
+practice_window_size()
 practice_refusal_and_help()
 practice_detach()
 validate_escape()
