@@ -144,6 +144,7 @@ constexpr std::array kValidate{
     value("--screenshot", K::OutFile, "PNG", "the panel off-screen, as a picture"),
     value("--toggle", K::List, "a,b", "effects the panel switches on before the picture"),
     flag("--auto-fit", "the panel presses Fit before the picture"),
+    size("--size", "WxH", "window or panel picture size in pixels (default 1280x720)", 16, 16384),
 };
 
 constexpr std::array kDiagnose{
@@ -206,8 +207,8 @@ constexpr std::array kCommands{
                 "CASE", K::JsonFile, 1, 1, kPractice, "exit codes: 0 ok, 1 a step was refused, 2 bad input"},
     CommandSpec{"validate", "the model against a measured coil (docs/validation.md)",
                 "validate FILE... [--effects a,b] [--fit young_modulus_gpa,...] --out DIR [options]   (several: jointly)\n"
-                "validate FILE --window [--effects a,b] [--fit ...]   (the panel)\n"
-                "validate FILE --screenshot PNG [--toggle a,b] [--auto-fit]   (the panel off-screen)",
+                "validate FILE --window [--effects a,b] [--fit ...] [--size WxH]   (the panel)\n"
+                "validate FILE --screenshot PNG [--toggle a,b] [--auto-fit] [--size WxH]   (the panel off-screen)",
                 "FILE...", K::JsonFile, 1, -1, kValidate,
                 "Writes DIR/report.json, DIR/report.md and the plots. Ctrl-C (SIGINT) or SIGTERM stops a\n"
                 "fit after the current evaluation and writes the report of the values reached.\n"

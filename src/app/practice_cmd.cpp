@@ -66,23 +66,6 @@ bool parseViews(const std::string& text, std::vector<std::pair<double, std::stri
   return true;
 }
 
-// "WxH" within the bounds of the table's --size (the table checked it
-// already; this reads it), with run's wording when it is not.
-bool parseSize(const std::string& text, PictureSize& size, std::string& why) {
-  const OptionSpec& spec = *findOption(*findCommand("practice"), "--size");
-  const size_t x = text.find('x');
-  long w = 0, h = 0;
-  const bool ok = x != std::string::npos && parseInteger(std::string_view(text).substr(0, x), w) &&
-                  parseInteger(std::string_view(text).substr(x + 1), h) && w >= spec.min && w <= spec.max &&
-                  h >= spec.min && h <= spec.max;
-  if (!ok) {
-    why = "--size needs " + expectedValue(spec) + ", got \"" + text + "\"";
-    return false;
-  }
-  size = {int(w), int(h)};
-  return true;
-}
-
 }  // namespace
 
 int runPractice(const std::vector<std::string>& args) {
@@ -124,7 +107,9 @@ int runPractice(const std::vector<std::string>& args) {
     } else if (a == "--size") {
       std::string why;
       if (!value(v)) return usage("--size needs WIDTHxHEIGHT in pixels, e.g. 1920x1080");
-      if (!parseSize(v, size, why)) return usage(why);
+      const auto wh = parseSize(*findOption(*findCommand("practice"), "--size"), v, why);
+      if (!wh) return usage(why);
+      size = {wh->first, wh->second};
     } else if (a == "--record") {
       if (!value(record)) return usage("--record needs a session file name");
     } else if (a == "--replay") {
