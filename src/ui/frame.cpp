@@ -3,6 +3,9 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <optional>
+
+#include "render/xray_look.h"
 
 namespace coilsim::ui {
 
@@ -42,8 +45,12 @@ bool drawFrame(FrameParts& p, int width, int height, double dt, std::string& err
   if (p.drawPanel) drawPanel(p.session, p.views, p.panel);
   drawViewLabels(p.renderer.viewports(), height, p.views);
   const ImVec2 fbScale = ImGui::GetIO().DisplayFramebufferScale;
+  // In the X-ray views the swatches are the greys the matter is drawn in.
+  std::optional<render::XRayGreys> greys;
+  if (p.settings.mode != render::ViewMode::Shaded && !p.panel.legend.empty())
+    greys = render::xrayGreys(p.session.drawData(), p.views.camera(), p.settings.xray);
   drawSceneLegend(p.panel.legend, float(p.panel.sidebarWidth) / (fbScale.x > 0 ? fbScale.x : 1.0f),
-                  float(height) / (fbScale.y > 0 ? fbScale.y : 1.0f));
+                  float(height) / (fbScale.y > 0 ? fbScale.y : 1.0f), greys ? &*greys : nullptr, p.panel.layout);
   p.renderer.bindFrame();
   p.imgui.render();
   return true;
