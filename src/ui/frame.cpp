@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "render/xray_look.h"
+#include "ui/contact_overlay.h"
 
 namespace coilsim::ui {
 
@@ -39,6 +40,8 @@ bool drawFrame(FrameParts& p, int width, int height, double dt, std::string& err
   }
   p.settings.mode = p.views.mode();
   p.settings.drawPoints = p.panel.overlays.contacts;
+  // Contact markers smaller than the coil, on its surface: its colour stays visible.
+  p.settings.pointRadius = contactMarkerRadius(p.session.model());
   if (!p.renderer.render(p.session.drawData(), p.views.camera(), p.settings, width, height, area, error))
     return false;
   p.imgui.newFrame(width, height, dt);
