@@ -117,6 +117,7 @@ constexpr std::array kPractice{
     value("--record", K::OutFile, "SESSION", "write the session, to replay it"),
     value("--screenshot", K::OutFile, "PNG", "a picture of the last frame with the read-outs"),
     value("--out", K::OutFile, "SCORE", "write the score sheet (JSON)"),
+    size("--size", "WxH", "window or picture size in pixels (default 1280x720)", 16, 16384),
     kQuiet,
 };
 
@@ -143,6 +144,7 @@ constexpr std::array kValidate{
     value("--screenshot", K::OutFile, "PNG", "the panel off-screen, as a picture"),
     value("--toggle", K::List, "a,b", "effects the panel switches on before the picture"),
     flag("--auto-fit", "the panel presses Fit before the picture"),
+    size("--size", "WxH", "window or panel picture size in pixels (default 1280x720)", 16, 16384),
 };
 
 constexpr std::array kDiagnose{
@@ -198,15 +200,15 @@ constexpr std::array kCommands{
                 "exit codes: 0 ok, 2 a directory holds no coilsim-plan/1 plan.json"},
     CommandSpec{"practice", "play or replay a practice session, write its score sheet (docs/planning.md)",
                 "practice CASE --coil NAME --input TIMELINE [--view V] [--views T:VIEW,...] [--duration S]\n"
-                "         [--record SESSION] [--screenshot PNG] --out SCORE\n"
-                "practice CASE --replay SESSION [--screenshot PNG] --out SCORE\n"
+                "         [--record SESSION] [--screenshot PNG] [--size WxH] --out SCORE\n"
+                "practice CASE --replay SESSION [--screenshot PNG] [--size WxH] --out SCORE\n"
                 "practice CASE --window [--coil NAME] [--view V] [--record SESSION] [--out SCORE]\n"
-                "         [--input TIMELINE] [--views T:VIEW,...] [--duration S] [--screenshot PNG]",
+                "         [--input TIMELINE] [--views T:VIEW,...] [--duration S] [--screenshot PNG] [--size WxH]",
                 "CASE", K::JsonFile, 1, 1, kPractice, "exit codes: 0 ok, 1 a step was refused, 2 bad input"},
     CommandSpec{"validate", "the model against a measured coil (docs/validation.md)",
                 "validate FILE... [--effects a,b] [--fit young_modulus_gpa,...] --out DIR [options]   (several: jointly)\n"
-                "validate FILE --window [--effects a,b] [--fit ...]   (the panel)\n"
-                "validate FILE --screenshot PNG [--toggle a,b] [--auto-fit]   (the panel off-screen)",
+                "validate FILE --window [--effects a,b] [--fit ...] [--size WxH]   (the panel)\n"
+                "validate FILE --screenshot PNG [--toggle a,b] [--auto-fit] [--size WxH]   (the panel off-screen)",
                 "FILE...", K::JsonFile, 1, -1, kValidate,
                 "Writes DIR/report.json, DIR/report.md and the plots. Ctrl-C (SIGINT) or SIGTERM stops a\n"
                 "fit after the current evaluation and writes the report of the values reached.\n"

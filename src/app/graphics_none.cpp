@@ -47,13 +47,13 @@ bool savePng(const std::string& path, const Canvas&, std::string& error) {
 }
 
 bool practicePicture(const planning::PracticeCase&, const planning::PracticeSession&, const std::string& path,
-                     std::string& error) {
+                     PictureSize, std::string& error) {
   error = path + ": not written: " + kNoGraphics;
   return false;
 }
 
 int practiseInWindow(const planning::PracticeCase&, std::string, const std::string&, const std::vector<TimedCommand>&,
-                     const std::vector<std::pair<double, std::string>>&, double, const std::string&,
+                     const std::vector<std::pair<double, std::string>>&, double, const std::string&, PictureSize,
                      std::shared_ptr<WindowOutputs>) {
   std::fprintf(stderr, "coilsim practice: no window: %s\n", kNoGraphics.c_str());
   return kExitUsage;

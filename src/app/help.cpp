@@ -16,8 +16,8 @@ namespace {
 // Options that need the ui layer, noted as such in a build without it.
 bool needsUi(const CommandSpec& c, const OptionSpec& o) {
   return (c.name == "run" && (o.name == "--screenshot" || o.name == "--view" || o.name == "--size")) ||
-         (c.name == "practice" && (o.name == "--window" || o.name == "--screenshot")) ||
-         (c.name == "validate" && (o.name == "--window" || o.name == "--screenshot"));
+         (c.name == "practice" && (o.name == "--window" || o.name == "--screenshot" || o.name == "--size")) ||
+         (c.name == "validate" && (o.name == "--window" || o.name == "--screenshot" || o.name == "--size"));
 }
 
 // The usage lines: the table's forms, or "coilsim NAME OPERAND [options]".

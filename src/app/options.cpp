@@ -70,11 +70,8 @@ void checkValue(const CommandSpec& c, const OptionSpec& o, const std::string& va
       break;
     }
     case ValueKind::Size: {
-      const size_t x = value.find('x');
-      long w = 0, h = 0;
-      if (x == std::string::npos || !parseInteger(std::string_view(value).substr(0, x), w) ||
-          !parseInteger(std::string_view(value).substr(x + 1), h) || !inBounds(o, double(w)) || !inBounds(o, double(h)))
-        fail();
+      std::string why;
+      if (!parseSize(o, value, why)) fail();
       break;
     }
     default:
@@ -83,6 +80,17 @@ void checkValue(const CommandSpec& c, const OptionSpec& o, const std::string& va
 }
 
 }  // namespace
+
+std::optional<std::pair<int, int>> parseSize(const OptionSpec& o, std::string_view text, std::string& why) {
+  const size_t x = text.find('x');
+  long w = 0, h = 0;
+  if (x == std::string_view::npos || !parseInteger(text.substr(0, x), w) || !parseInteger(text.substr(x + 1), h) ||
+      !inBounds(o, double(w)) || !inBounds(o, double(h))) {
+    why = std::string(o.name) + " needs " + expectedValue(o) + ", got \"" + std::string(text) + "\"";
+    return std::nullopt;
+  }
+  return std::make_pair(int(w), int(h));
+}
 
 bool parseNumber(std::string_view s, double& out) {
   if (!s.empty() && s[0] == '+') s.remove_prefix(1);  // from_chars reads no '+'

@@ -47,6 +47,10 @@ ParsedArgs parseArgs(const CommandSpec& command, const std::vector<std::string>&
 bool parseNumber(std::string_view s, double& out);
 // A whole number, all of `s`; false otherwise.
 bool parseInteger(std::string_view s, long& out);
+// "WxH" of a size option (ValueKind::Size), each within its bounds; nullopt
+// otherwise, and then `why` says so as the command line's check does
+// ("--size needs WIDTHxHEIGHT in pixels, each in [16, 16384], got \"8x8\"").
+std::optional<std::pair<int, int>> parseSize(const OptionSpec& option, std::string_view text, std::string& why);
 
 // What a value of this option must be: "a number > 0", "a whole number in
 // [1, 256]", "a timeline file (JSON)".

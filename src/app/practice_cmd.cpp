@@ -9,10 +9,12 @@
 #include <memory>
 #include <optional>
 
+#include "app/commands.h"
 #include "app/format.h"
 #include "app/graphics.h"
 #include "app/practice_window.h"
 #include "app/exit_codes.h"
+#include "app/options.h"
 #include "app/progress.h"
 #include "app/stop_signal.h"
 #include "io/json_reader.h"
@@ -28,11 +30,11 @@ int usage(const std::string& message) {
   std::fprintf(stderr,
                "coilsim practice: %s\n"
                "usage: coilsim practice CASE --coil NAME --input TIMELINE [--view 3d|xray|biplane] [--views T:VIEW,...]\n"
-               "                        [--duration S] [--record SESSION] [--screenshot PNG] --out SCORE\n"
-               "       coilsim practice CASE --replay SESSION [--screenshot PNG] --out SCORE\n"
+               "                        [--duration S] [--record SESSION] [--screenshot PNG] [--size WxH] --out SCORE\n"
+               "       coilsim practice CASE --replay SESSION [--screenshot PNG] [--size WxH] --out SCORE\n"
                "       coilsim practice CASE --window [--coil NAME] [--view 3d|xray|biplane] [--record SESSION]\n"
                "                        [--out SCORE] [--input TIMELINE] [--views T:VIEW,...] [--duration S]\n"
-               "                        [--screenshot PNG]\n"
+               "                        [--screenshot PNG] [--size WxH]\n"
                "(docs/planning.md)\n",
                message.c_str());
   return kExitUsage;
@@ -71,6 +73,7 @@ int runPractice(const std::vector<std::string>& args) {
   std::vector<std::pair<double, std::string>> views;
   bool window = false;
   double duration = 0;
+  PictureSize size;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     // An option's value is never the next option (`--out --duration` names no file).
@@ -101,6 +104,12 @@ int runPractice(const std::vector<std::string>& args) {
       // A session file holds at most an hour (what --replay reads back).
       if (ec != std::errc() || end != v.data() + v.size() || !(duration > 0) || !(duration <= 3600))
         return usage("--duration needs seconds in (0, 3600], got \"" + v + "\"");
+    } else if (a == "--size") {
+      std::string why;
+      if (!value(v)) return usage("--size needs WIDTHxHEIGHT in pixels, e.g. 1920x1080");
+      const auto wh = parseSize(*findOption(*findCommand("practice"), "--size"), v, why);
+      if (!wh) return usage(why);
+      size = {wh->first, wh->second};
     } else if (a == "--record") {
       if (!value(record)) return usage("--record needs a session file name");
     } else if (a == "--replay") {
@@ -141,13 +150,13 @@ int runPractice(const std::vector<std::string>& args) {
       auto outputs = std::make_shared<WindowOutputs>();
       outputs->record = record;
       outputs->out = out;
-      return practiseInWindow(pc, coil, view, script, views, duration, screenshot, outputs);
+      return practiseInWindow(pc, coil, view, script, views, duration, screenshot, size, outputs);
     }
     // The last frame of a scripted session, in its last view, with the read-outs.
     std::string shotError;
     auto picture = [&](const planning::PracticeSession& s) {
       if (screenshot.empty()) return;
-      if (!practicePicture(pc, s, screenshot, shotError)) std::fprintf(stderr, "coilsim practice: %s\n", shotError.c_str());
+      if (!practicePicture(pc, s, screenshot, size, shotError)) std::fprintf(stderr, "coilsim practice: %s\n", shotError.c_str());
     };
     planning::ScoreSheet score;
     // Progress on a terminal; Ctrl-C ends the session after the current step, scored as it stands.

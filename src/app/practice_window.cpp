@@ -124,9 +124,10 @@ ui::SceneSetup practiceSetup(const planning::PracticeCase& pc, const std::string
 }  // namespace
 
 bool practicePicture(const planning::PracticeCase& pc, const planning::PracticeSession& session,
-                     const std::string& path, std::string& error) {
+                     const std::string& path, PictureSize size, std::string& error) {
   ui::ViewerOptions v = practiceViewer(pc, session, session.view());
   v.screenshotPath = path;
+  v.width = size.width, v.height = size.height;
   return ui::renderOffscreen(session.model(), session.state(), v, error);
 }
 
@@ -135,12 +136,14 @@ bool practicePicture(const planning::PracticeCase& pc, const planning::PracticeS
 // through the same path as the keys).
 int practiseInWindow(const planning::PracticeCase& pc, std::string coil, const std::string& view,
                      const std::vector<TimedCommand>& script, const std::vector<std::pair<double, std::string>>& views,
-                     double duration, const std::string& screenshot, std::shared_ptr<WindowOutputs> outputs) {
+                     double duration, const std::string& screenshot, PictureSize size,
+                     std::shared_ptr<WindowOutputs> outputs) {
   if (coil.empty()) coil = pc.coils.front().name;
   const ui::SceneSetup first = practiceSetup(pc, coil, outputs);
   ui::ViewerOptions v;
   v.scenePath = pc.name;
   v.view = view;
+  v.width = size.width, v.height = size.height;
   v.addDrawData = first.draw;
   v.legend = sacLegend(pc.sac);
   v.readouts = first.readouts;

@@ -264,6 +264,9 @@ int run(const RunOptions& o) {
       record.deployment = state.device;
       record.catheterTip = catheterTip(model, state);
     }
+    // The run as the window closed, read out as the headless run reads its end.
+    readSac(spec, model, state, record);
+    std::fflush(stdout);
     return writeOut(o, model, state, record) ? code : kExitUsage;
   }
 

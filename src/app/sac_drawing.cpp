@@ -58,11 +58,13 @@ bool hasParentVessel(const planning::Sac& sac) {
 
 std::vector<ui::LegendEntry> sacLegend(const planning::Sac& sac) {
   std::vector<ui::LegendEntry> l;
-  l.push_back({defaultColour(RodRole::Coil), "coil"});
-  l.push_back({defaultColour(RodRole::Catheter), "microcatheter"});
+  using M = ui::LegendMatter;
+  l.push_back({defaultColour(RodRole::Coil), "coil", M::Coil});
+  l.push_back({defaultColour(RodRole::Catheter), "microcatheter", M::Catheter});
   const bool vessel = hasParentVessel(sac);
-  l.push_back({kWallColour, vessel ? "sac and parent vessel wall" : "sac wall"});
-  l.push_back({kNeckColour, "neck plane (the ostium)"});
+  // In X-ray the wall is the contrast it holds; the neck plane a line across it.
+  l.push_back({kWallColour, vessel ? "sac and parent vessel wall" : "sac wall", M::Vessel});
+  l.push_back({kNeckColour, "neck plane (the ostium)", M::VesselOutline});
   if (!vessel) l.push_back({Colour(0, 0, 0, 0), "no parent vessel in this case: its side is beyond the neck plane"});
   return l;
 }

@@ -10,7 +10,9 @@
 #include <memory>
 #include <sstream>
 
+#include "app/commands.h"
 #include "app/exit_codes.h"
+#include "app/options.h"
 #include "app/progress.h"
 #include "app/stop_signal.h"
 #include "app/validate_plots.h"
@@ -40,8 +42,8 @@ int usage(const std::string& message) {
                "coilsim validate: %s\n"
                "usage: coilsim validate FILE... [--effects a,b] [--fit young_modulus_gpa,...] --out DIR\n"
                "         [--spacing MM] [--push-increment MM] [--no-plots] [--quiet]\n"
-               "       coilsim validate FILE --window [--effects a,b] [--fit ...]   (the panel)\n"
-               "       coilsim validate FILE --screenshot PNG [--toggle a,b] [--auto-fit]   (the panel off-screen)\n"
+               "       coilsim validate FILE --window [--effects a,b] [--fit ...] [--size WxH]   (the panel)\n"
+               "       coilsim validate FILE --screenshot PNG [--toggle a,b] [--auto-fit] [--size WxH]   (the panel off-screen)\n"
                "(docs/validation.md)\n",
                message.c_str());
   return kExitUsage;
@@ -458,21 +460,31 @@ int runValidate(const std::vector<std::string>& args) {
   // The panel's own options first; the rest are the workbench's.
   WindowArgs w;
   std::vector<std::string> rest;
+  bool sized = false;
   for (size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--window") {
       w.window = true;
     } else if (args[i] == "--auto-fit") {
       w.autoFit = true;
-    } else if (args[i] == "--screenshot" || args[i] == "--toggle") {
+    } else if (args[i] == "--screenshot" || args[i] == "--toggle" || args[i] == "--size") {
       if (i + 1 >= args.size() || args[i + 1].empty()) return usage(args[i] + " needs a value");
-      if (args[i] == "--screenshot") w.screenshot = args[++i];
-      else w.toggle = splitList(args[++i]);
+      if (args[i] == "--screenshot") {
+        w.screenshot = args[++i];
+      } else if (args[i] == "--toggle") {
+        w.toggle = splitList(args[++i]);
+      } else {
+        std::string why;
+        const auto wh = parseSize(*findOption(*findCommand("validate"), "--size"), args[++i], why);
+        if (!wh) return usage(why);
+        w.width = wh->first, w.height = wh->second, sized = true;
+      }
     } else {
       rest.push_back(args[i]);
     }
   }
   const bool panel = w.window || !w.screenshot.empty();
   if (!panel && (w.autoFit || !w.toggle.empty())) return usage("--toggle and --auto-fit drive the panel: add --window or --screenshot PNG");
+  if (!panel && sized) return usage("--size sizes the panel: add --window or --screenshot PNG");
   WorkbenchArgs a;
   if (panel) rest.insert(rest.end(), {"--out", "."});  // the panel writes no report
   if (const std::string e = parseWorkbenchArgs(rest, true, a); !e.empty()) return usage(e);

@@ -206,6 +206,7 @@ int runValidateWindow(const WorkbenchArgs& a, const WindowArgs& w) {
   o.toggle = w.toggle;
   o.autoFit = w.autoFit;
   o.screenshotPath = w.screenshot;
+  o.width = w.width, o.height = w.height;
   if (w.window) return ui::runValidationWindow(h, o);
   std::string error;
   if (!ui::renderValidationOffscreen(h, o, error)) {

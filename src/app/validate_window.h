@@ -13,6 +13,7 @@ struct WindowArgs {
   std::string screenshot;           // --screenshot PNG (off-screen without --window)
   std::vector<std::string> toggle;  // --toggle a,b: scripted clicks on the effect toggles
   bool autoFit = false;             // --auto-fit: Fit pressed once
+  int width = 1280, height = 720;   // --size WxH of the window or the picture
 };
 
 // Opens the panel (or renders it off-screen) on the measurement `a.file`.

@@ -9,7 +9,7 @@ namespace {
 // the contact effects has no RodState::contact): the requires-expression
 // names every field used, so a State without them compiles to "none".
 template <class Rod>
-void visit(const Rod& r, ContactSummary& sum, double& maxForce, DrawData* out, double scale) {
+void visit(const Rod& r, double radius, ContactSummary& sum, double& maxForce, DrawData* out, double scale) {
   if constexpr (requires {
                   r.contact.wall;
                   r.contact.self;
@@ -32,31 +32,39 @@ void visit(const Rod& r, ContactSummary& sum, double& maxForce, DrawData* out, d
           continue;
         }
         DrawPoint p;
-        p.position = (1 - c.s) * r.x[size_t(c.segment)] + c.s * r.x[size_t(c.segment) + 1];
+        p.position = (1 - c.s) * r.x[size_t(c.segment)] + c.s * r.x[size_t(c.segment) + 1] - radius * c.normal;
         p.vector = c.normal * (c.normalForce * scale);
         p.colour = list == lists ? Colour(1.0f, 0.85f, 0.1f, 1.0f) : Colour(0.2f, 0.9f, 1.0f, 1.0f);
         out->points.push_back(p);
       }
     }
   } else {
-    (void)r, (void)sum, (void)maxForce, (void)out, (void)scale;
+    (void)r, (void)radius, (void)sum, (void)maxForce, (void)out, (void)scale;
   }
 }
 
 }  // namespace
 
-ContactSummary addContactMarkers(const State& state, double arrowLength, DrawData& out) {
+ContactSummary addContactMarkers(const Model& model, const State& state, double arrowLength, DrawData& out) {
   ContactSummary sum;
   sum.wallLoad = state.stats.wallLoad.now;
   sum.wallLoadMax = state.stats.wallLoad.max;
   double maxForce = 0;
+  auto radius = [&](size_t k) { return k < model.rods.size() ? model.rods[k].section.radius : 0.0; };
   // First the largest force (for the arrows' scale), then the markers.
-  for (const RodState& r : state.rods)
-    if (r.active) visit(r, sum, maxForce, nullptr, 0);
+  for (size_t k = 0; k < state.rods.size(); ++k)
+    if (state.rods[k].active) visit(state.rods[k], radius(k), sum, maxForce, nullptr, 0);
   const double scale = maxForce > 0 ? arrowLength / maxForce : 0;
-  for (const RodState& r : state.rods)
-    if (r.active) visit(r, sum, maxForce, &out, scale);
+  for (size_t k = 0; k < state.rods.size(); ++k)
+    if (state.rods[k].active) visit(state.rods[k], radius(k), sum, maxForce, &out, scale);
   return sum;
+}
+
+double contactMarkerRadius(const Model& model) {
+  double thinnest = 0;
+  for (const RodModel& r : model.rods)
+    if (r.section.radius > 0 && (thinnest == 0 || r.section.radius < thinnest)) thinnest = r.section.radius;
+  return 0.6 * thinnest;
 }
 
 }  // namespace coilsim::ui

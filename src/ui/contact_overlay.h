@@ -3,6 +3,7 @@
 // the largest wall force for the panel, read from what the contact effects
 // leave in the State (RodState::contact). GL-free.
 #include "physics/draw_data.h"
+#include "physics/model.h"
 #include "physics/state.h"
 
 namespace coilsim::ui {
@@ -16,9 +17,17 @@ struct ContactSummary {
   double wallLoad = 0, wallLoadMax = 0;
 };
 
-// Appends one point per contact (at the contact on the centre line; wall
-// contacts yellow, self and rod contacts cyan) with an arrow along the
-// force on the rod, the largest `arrowLength` m long. Returns the summary.
-ContactSummary addContactMarkers(const State& state, double arrowLength, DrawData& out);
+// Appends one point per contact (wall contacts yellow, self and rod
+// contacts cyan) with an arrow along the force on the rod, the largest
+// `arrowLength` m long. The point is where the rod touches: on its surface,
+// on the side the force comes from (the centre line minus the contact
+// normal times the rod's radius), so that a marker drawn there no larger
+// than the rod (contactMarkerRadius) leaves the rod's own colour, its
+// stress or wall load, visible around it. Returns the summary.
+ContactSummary addContactMarkers(const Model& model, const State& state, double arrowLength, DrawData& out);
+
+// The radius to draw contact markers with (RenderSettings::pointRadius):
+// 0.6 times the thinnest rod's radius, m; 0 for a model without rods.
+double contactMarkerRadius(const Model& model);
 
 }  // namespace coilsim::ui

@@ -3,6 +3,10 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <optional>
+
+#include "render/xray_look.h"
+#include "ui/contact_overlay.h"
 
 namespace coilsim::ui {
 
@@ -36,14 +40,20 @@ bool drawFrame(FrameParts& p, int width, int height, double dt, std::string& err
   }
   p.settings.mode = p.views.mode();
   p.settings.drawPoints = p.panel.overlays.contacts;
+  // Contact markers smaller than the coil, on its surface: its colour stays visible.
+  p.settings.pointRadius = contactMarkerRadius(p.session.model());
   if (!p.renderer.render(p.session.drawData(), p.views.camera(), p.settings, width, height, area, error))
     return false;
   p.imgui.newFrame(width, height, dt);
   if (p.drawPanel) drawPanel(p.session, p.views, p.panel);
   drawViewLabels(p.renderer.viewports(), height, p.views);
   const ImVec2 fbScale = ImGui::GetIO().DisplayFramebufferScale;
+  // In the X-ray views the swatches are the greys the matter is drawn in.
+  std::optional<render::XRayGreys> greys;
+  if (p.settings.mode != render::ViewMode::Shaded && !p.panel.legend.empty())
+    greys = render::xrayGreys(p.session.drawData(), p.views.camera(), p.settings.xray);
   drawSceneLegend(p.panel.legend, float(p.panel.sidebarWidth) / (fbScale.x > 0 ? fbScale.x : 1.0f),
-                  float(height) / (fbScale.y > 0 ? fbScale.y : 1.0f));
+                  float(height) / (fbScale.y > 0 ? fbScale.y : 1.0f), greys ? &*greys : nullptr, p.panel.layout);
   p.renderer.bindFrame();
   p.imgui.render();
   return true;

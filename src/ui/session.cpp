@@ -197,7 +197,7 @@ void Session::refreshDrawData() {
   fillDrawData(model_, state_, draw_);
   if (hook_) hook_(model_, state_, draw_);
   // Arrows up to 3 mm: a coil loop is a few millimetres across.
-  contacts_ = addContactMarkers(state_, 3e-3, draw_);
+  contacts_ = addContactMarkers(model_, state_, 3e-3, draw_);
   largestMoment_ = colourByMoment_ ? colourByBendingMoment(state_, momentScale_, draw_) : 0.0;
 }
 

@@ -23,6 +23,7 @@
 #include "render/renderer.h"
 #include "ui/help_overlay.h"
 #include "ui/imgui_layer.h"
+#include "ui/layout_dump.h"
 #include "ui/realtime.h"
 #include "ui/validation_charts.h"
 #include "ui/views.h"
@@ -106,6 +107,8 @@ class Workbench {
   bool takeSceneChanged() { return std::exchange(sceneChanged_, false); }
 
   void draw(int sidebarWidth, int width, int height);
+  // Where draw() marks its controls (null: nowhere).
+  void setLayout(LayoutDump* layout) { layout_ = layout; }
   // Keys as in the run and practice windows: F1 or ? shows or hides the
   // help; Esc hides it, or else asks the window to close.
   void onKey(int key, int mods) {
@@ -126,6 +129,7 @@ class Workbench {
   size_t stage_ = 0;
   bool showBefore_ = false, sceneChanged_ = true;
   bool helpOpen_ = false, closeRequested_ = false;
+  LayoutDump* layout_ = nullptr;
   std::thread thread_;
   std::mutex mutex_;
   std::atomic<bool> fitting_{false}, stop_{false};
@@ -135,13 +139,32 @@ class Workbench {
   std::optional<ValidationView> done_;
 };
 
+// The last item's rectangle in the layout dump, if there is one.
+void mark(LayoutDump* layout, const char* name) {
+  if (layout) layout->markLastItem(name);
+}
+
 void Workbench::drawTable() {
   const ValidationView& b = hooks_.before;
+  // Short headers, the quantities named above them: the table fits the
+  // 537-pixel panel of a 1280x720 window.
+  ImGui::TextWrapped("Stage error before and after the fit; after it, node error (mean +- sd), mean displacement "
+                     "and mean distance to the measured line, in mm:");
   if (!ImGui::BeginTable("stages", 7, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit))
     return;
-  for (const char* h : {"stage", "l (mm)", "error before", "error after", "node error after", "displ. (mm)", "dist. (mm)"})
+  for (const char* h : {"stage", "l (mm)", "before", "after", "node error", "displ.", "dist."})
     ImGui::TableSetupColumn(h);
-  ImGui::TableHeadersRow();
+  // The headers one by one, so that the last one's place is known (a table
+  // too wide for the panel puts it beyond the panel's edge).
+  ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
+  int clipped = 0;  // headers narrower than their name: a table squeezed into too narrow a panel
+  for (int c = 0; c < 7; ++c) {
+    ImGui::TableSetColumnIndex(c);
+    ImGui::TableHeader(ImGui::TableGetColumnName(c));
+    clipped += ImGui::GetItemRectSize().x + 0.5f < ImGui::CalcTextSize(ImGui::TableGetColumnName(c)).x;
+  }
+  mark(layout_, "stages_last_column");
+  if (layout_) layout_->fact("stages_clipped_headers", double(clipped));
   for (size_t k = 0; k < b.stages.size(); ++k) {
     const ValidationStageRow& s = b.stages[k];
     const ValidationStageRow* a = k < after_.stages.size() ? &after_.stages[k] : nullptr;
@@ -188,11 +211,13 @@ void Workbench::drawFit() {
     }
     ImGui::EndTable();
   }
+  mark(layout_, "effects");
   if (busy) {
     if (ImGui::Button("Stop")) stop_ = true;
   } else if (ImGui::Button("Fit")) {
     startFit();
   }
+  mark(layout_, "fit");
   ImGui::SameLine();
   std::vector<float> history;
   int evaluations = 0;
@@ -205,6 +230,7 @@ void Workbench::drawFit() {
   char label[96];
   std::snprintf(label, sizeof label, busy ? "fitting: evaluation %d" : "%d evaluations", evaluations);
   ImGui::ProgressBar(busy ? fraction : (fits_ > 0 ? 1.0f : 0.0f), ImVec2(-1, 0), label);
+  mark(layout_, "progress");
   float top = 0;
   for (float h : history) top = std::max(top, h);
   char title[96] = "RMS residual per coordinate (mm)";
@@ -225,7 +251,11 @@ void Workbench::drawFit() {
     std::string on;
     for (const std::string& e : after_.effects) on += (on.empty() ? "" : ", ") + e;
     ImGui::Text("After: effects %s", on.empty() ? "none" : on.c_str());
-    for (const std::string& f : after_.fitted) ImGui::BulletText("%s", f.c_str());
+    // Wrapped: an effect's parameter name with its value and sigma is wider than the panel.
+    for (const std::string& f : after_.fitted) {
+      ImGui::Bullet();
+      ImGui::TextWrapped("%s", f.c_str());
+    }
   }
 }
 
@@ -259,10 +289,12 @@ void Workbench::draw(int sidebarWidth, int width, int height) {
   ImGui::TextWrapped("%s", hooks_.title.c_str());
   ImGui::Separator();
   drawTable();
+  mark(layout_, "stages");
   ImGui::Separator();
   drawFit();
   ImGui::Separator();
   if (ImGui::Checkbox("show the base model (before)", &showBefore_)) sceneChanged_ = true;
+  mark(layout_, "show_before");
   drawErrorPlots();
   ImGui::Separator();
   const ValidationView& v = shown();
@@ -275,10 +307,17 @@ void Workbench::draw(int sidebarWidth, int width, int height) {
     drawErrorColourScale(hooks_.errorScale);
   }
   ImGui::TextDisabled("F1 or ?: every key and mouse action; Esc closes the window");
+  if (layout_) {
+    const ImVec2 p = ImGui::GetWindowPos(), s = ImGui::GetWindowSize();
+    layout_->mark("panel", p.x, p.y, p.x + s.x, p.y + s.y);
+    layout_->fact("fitting", bool(fitting_));
+    layout_->fact("fits", double(fits_));
+    layout_->fact("help_open", helpOpen_);
+  }
   ImGui::End();
   if (helpOpen_)
     drawHelpOverlay("Keys and mouse (F1)###help", validateWindowHelp(), float(sidebarWidth), float(width),
-                    float(height), nullptr);
+                    float(height), layout_);
 }
 
 struct Frame {
@@ -343,6 +382,8 @@ int runValidationWindow(const ValidationHooks& hooks, const ValidationWindowOpti
   }
   GLFWwindow* window = static_cast<GLFWwindow*>(backend->nativeWindow());
   Workbench w(hooks);
+  LayoutDump layout(LayoutDump::pathFromEnvironment());
+  if (layout.enabled()) w.setLayout(&layout);
   // Keys through a GLFW callback, installed before ImGui's (which chains to
   // it): a key pressed and released within one frame is still seen.
   glfwSetWindowUserPointer(window, &w);
@@ -372,10 +413,18 @@ int runValidationWindow(const ValidationHooks& hooks, const ValidationWindowOpti
       glfwWaitEventsTimeout(0.05);
       continue;
     }
+    int ww = 0, wh = 0;
+    glfwGetWindowSize(window, &ww, &wh);
+    layout.begin(float(ww), float(wh));
     if (!drawFrame(*f, w, fbw, fbh, dt, error)) {
       std::fprintf(stderr, "coilsim: %s\n", error.c_str());
       exitCode = 1;
       break;
+    }
+    if (!layout.write(error)) {
+      std::fprintf(stderr, "coilsim: %s\n", error.c_str());
+      layout = LayoutDump("");  // said once; the window goes on
+      w.setLayout(nullptr);
     }
     steerCamera(*f, sidebarOf(fbw));
     f->renderer.present(fbw, fbh);
@@ -406,12 +455,17 @@ bool renderValidationOffscreen(const ValidationHooks& hooks, const ValidationWin
   auto f = std::make_unique<Frame>();
   if (!f->renderer.init(error) || !f->imgui.init(nullptr, error)) return false;
   Workbench w(hooks);
+  LayoutDump layout(LayoutDump::pathFromEnvironment());
+  if (layout.enabled()) w.setLayout(&layout);
   if (!applyScript(w, o, error)) return false;
   while (w.fitting()) std::this_thread::sleep_for(std::chrono::milliseconds(20));
   w.poll();
   // ImGui sizes tables and auto-fitting items on their first frame: two frames.
-  for (int k = 0; k < 2; ++k)
+  for (int k = 0; k < 2; ++k) {
+    layout.begin(float(o.width), float(o.height));
     if (!drawFrame(*f, w, o.width, o.height, 1.0 / 60.0, error)) return false;
+  }
+  if (!layout.write(error)) return false;
   render::Image image;
   if (!readBackFrame(f->renderer, image, error) || !writeImage(image, o.screenshotPath, error)) return false;
   if (!w.after().ok) {

@@ -61,7 +61,7 @@ struct ValidationHooks {
 };
 
 struct ValidationWindowOptions {
-  int width = 1400, height = 860;
+  int width = 1280, height = 720;  // fits a 1280x720 screen, as the run and practice windows do
   // Scripted runs (tests, pictures): effects toggled as by a click on the
   // first frame, Fit pressed once, and the frame written to
   // `screenshotPath` once the fit is over (the window then closes).
@@ -73,6 +73,9 @@ struct ValidationWindowOptions {
 
 // Opens the window; returns a process exit code (non-zero with a message
 // when there is no display or GL 3.3, when a scripted fit fails or times out).
+// With COILSIM_LAYOUT_DUMP set, each frame writes where the panel's controls
+// are (ui/layout_dump.h), as the run and practice windows do; so does the
+// off-screen picture.
 int runValidationWindow(const ValidationHooks& hooks, const ValidationWindowOptions& options);
 
 // The same panel off-screen (OSMesa): the scripted toggles and fit run to

@@ -174,6 +174,20 @@ TEST(ValidatePanel, WindowUnderXvfbTogglesFitsAndWritesItsFrame) {
   EXPECT_GT(fs::file_size(dir / "window.png"), 10000u);
 }
 
+// --size as run reads it (the same refusal, word for word), for the panel only.
+TEST(ValidatePanel, SizeIsCheckedAsRunChecksItAndNeedsThePanel) {
+  const fs::path dir = scratch("validate_panel_size");
+  const Exec r = coilsim({"run", kSource + "/scenes/default.json", "--size", "8x480"}, dir);
+  const Exec v = coilsim({"validate", kExample, "--window", "--size", "8x480"}, dir);
+  EXPECT_EQ(v.code, 2);
+  const std::string said = "--size needs WIDTHxHEIGHT in pixels, each in [16, 16384], got \"8x480\"";
+  EXPECT_CONTAINS(r.err, said);
+  EXPECT_CONTAINS(v.err, said);
+  const Exec n = coilsim({"validate", kExample, "--size", "640x480", "--out", (dir / "o").string()}, dir);
+  EXPECT_EQ(n.code, 2);
+  EXPECT_CONTAINS(n.err, "--size sizes the panel");
+}
+
 TEST(ValidatePanel, ScriptOptionsNeedThePanel) {
   const fs::path dir = scratch("validate_panel_opts");
   const Exec r = coilsim({"validate", kExample, "--toggle", "drag", "--out", (dir / "o").string()}, dir);

@@ -2,9 +2,16 @@
 // (golden), and clear errors for a bad path or view.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
 #include "coil_pixels.h"
 #include "golden.h"
 #include "physics/state.h"
+#include "render/camera.h"
+#include "render/xray_look.h"
 #include "scenes.h"
 #include "ui/viewer.h"
 
@@ -79,6 +86,68 @@ TEST(RenderOffscreen, LegendInTheSceneCornerWithoutPanel) {
     }
   EXPECT_GT(cyan, 20);
   EXPECT_TRUE(testing::matchesGolden(image, "offscreen_legend"));
+}
+
+// The rectangle the layout dump gives `name` ([x0, y0, x1, y1]); empty if none.
+std::vector<float> rectOf(const std::string& dump, const std::string& name) {
+  const size_t at = dump.find("\"" + name + "\": [");
+  if (at == std::string::npos) return {};
+  std::vector<float> r(4);
+  std::sscanf(dump.c_str() + dump.find('[', at), "[%f, %f, %f, %f]", &r[0], &r[1], &r[2], &r[3]);
+  return r;
+}
+
+// In the X-ray view a legend entry that names its matter shows the grey the
+// renderer draws that matter in (render::xrayGreys, checked against drawn
+// pixels in tests/render/xray_look_test.cpp), not its 3D colour; an entry
+// without a matter keeps its colour (golden: the swatches and the picture).
+TEST(RenderOffscreen, XrayLegendSwatchesAreTheGreysOfTheDrawnMatter) {
+  const Model m = testing::helixModel();
+  const State s = makeState(m);
+  ViewerOptions o = helixOptions("xray", "offscreen_xray_legend");
+  o.drawPanel = false;
+  o.width = 480;
+  o.height = 300;
+  o.legend = {{Colour(0.85f, 0.82f, 0.75f, 1), "coil", LegendMatter::Coil},
+              {Colour(0.3f, 0.5f, 0.9f, 1), "microcatheter", LegendMatter::Catheter},
+              {Colour(0.85f, 0.32f, 0.30f, 0.3f), "sac and parent vessel", LegendMatter::Vessel},
+              {Colour(0.25f, 0.85f, 1.0f, 0.3f), "neck plane", LegendMatter::VesselOutline},
+              {Colour(1.0f, 0.85f, 0.1f, 1), "a marker (no matter: its colour)"}};
+  const std::string dump = testing::outputDir() + "/offscreen_xray_legend.layout.json";
+  ::setenv("COILSIM_LAYOUT_DUMP", dump.c_str(), 1);
+  std::string error;
+  const bool ok = renderOffscreen(m, s, o, error);
+  ::unsetenv("COILSIM_LAYOUT_DUMP");
+  ASSERT_TRUE(ok) << error;
+  const render::Image image = load(o.screenshotPath);
+  std::FILE* f = std::fopen(dump.c_str(), "rb");
+  ASSERT_NE(f, nullptr) << dump;
+  std::string text(1 << 16, '\0');
+  text.resize(std::fread(text.data(), 1, text.size(), f));
+  std::fclose(f);
+  // The greys for the view's direction (AP: the vessel's mean chord depends on it).
+  const render::XRayGreys g = render::xrayGreys(testing::helixDrawData(m, s), render::apView(render::Camera{}),
+                                                render::XRaySettings{});
+  const float want[] = {g.coil, g.catheter, g.vessel};
+  for (int i = 0; i < 3; ++i) {
+    const std::vector<float> r = rectOf(text, "legend_grey_" + std::to_string(i));
+    ASSERT_EQ(r.size(), 4u) << i << ": " << text;
+    const std::uint8_t* p = image.at(int(0.5f * (r[0] + r[2])), int(0.5f * (r[1] + r[3])));
+    EXPECT_NEAR(p[0], 255 * want[i], 2.0) << "entry " << i;
+    EXPECT_TRUE(p[0] == p[1] && p[1] == p[2]) << "entry " << i << " is grey";
+  }
+  EXPECT_LT(g.coil, g.catheter);  // platinum is darker than the catheter
+  // The neck plane: the vessel's grey crossed by the outline's, darker.
+  const std::vector<float> r = rectOf(text, "legend_grey_3");
+  ASSERT_EQ(r.size(), 4u);
+  const std::uint8_t* mid = image.at(int(0.5f * (r[0] + r[2])), int(0.5f * (r[1] + r[3])));
+  EXPECT_NEAR(mid[0], 255 * g.vesselEdge, 2.0);
+  // The marker keeps its yellow.
+  const std::vector<float> y = rectOf(text, "legend_swatch_4");
+  ASSERT_EQ(y.size(), 4u);
+  const std::uint8_t* q = image.at(int(0.5f * (y[0] + y[2])), int(0.5f * (y[1] + y[3])));
+  EXPECT_TRUE(q[0] > 230 && q[1] > 190 && q[2] < 60) << int(q[0]) << " " << int(q[1]) << " " << int(q[2]);
+  EXPECT_TRUE(testing::matchesGolden(image, "offscreen_xray_legend"));
 }
 
 TEST(RenderOffscreen, UnwritablePathIsNamed) {

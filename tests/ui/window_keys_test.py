@@ -69,6 +69,22 @@ def offscreen_sections(size):
     return json.load(open(dump))["sections"] if os.path.exists(dump) else None
 
 
+def practice_window_size():
+    """practice --window --size 1920x1080 opens at that size, and the panel fits."""
+    dump = f"{out}/layout-practice-size.json"
+    win = Window([coilsim, "practice", case, "--window", "--coil", "finishing-2x10", "--size", "1920x1080"], display,
+                 dump, out)
+    try:
+        first = win.wait("the practice window's first frames", lambda l: "detach" in l["items"])
+        check(first["window"] == [1920, 1080], f"practice --size 1920x1080 opens a {first['window']} window")
+        fits(first, "practice window 1920x1080")
+        win.key("Escape")
+        code, _, err = win.close()
+        check(code == 0, f"practice window 1920x1080: Esc closes it (exit {code}) {err.strip()[-200:]}")
+    finally:
+        win.kill()
+
+
 def practice_refusal_and_help():
     """The coil is inside: D is refused without asking; F1 shows the help."""
     dump = f"{out}/layout-practice-a.json"
@@ -152,14 +168,51 @@ def practice_detach():
         win.kill()
 
 
-def validate_escape():
-    dump = f"{out}/layout-validate.json"
+# What must stay on screen in the validate window: the stage table (to its
+# last column), the effect toggles, Fit with its progress, the before switch.
+VALIDATE = ["stages", "stages_last_column", "effects", "fit", "progress", "show_before"]
+
+
+def validate_window(size, fit):
+    """The validate window at `size` (None: its default, which must be 1280x720)
+    fits, before and (with `fit`) after a fit; F1 shows the help beside the
+    panel; Esc hides it, a second Esc closes the window."""
+    label = f"validate window {size or 'default'}{' after a fit' if fit else ''}"
+    dump = f"{out}/layout-validate-{size or 'default'}{'-fit' if fit else ''}.json"
     example = f"{root}/examples/measurements/soft-catheter-helix.json"
-    win = Window([coilsim, "validate", example, "--window", "--quiet"], display, dump, out, title="coilsim validate")
+    argv = [coilsim, "validate", example, "--window", "--quiet"] + (["--size", size] if size else [])
+    if fit:
+        argv += ["--toggle", "catheter_compliance", "--auto-fit", "--spacing", "4"]
+    win = Window(argv, display, dump, out, title="coilsim validate")
     try:
+        l = win.wait("the validate window's frames", lambda l: "panel" in l["items"] and (not fit or l["fits"] >= 1
+                                                                                         and not l["fitting"]), 120)
+        win.frames(3)  # a table and the fitted values are laid out from their second frame on
+        l = win.layout()
+        w, h = l["window"]
+        want = [int(v) for v in (size or "1280x720").split("x")]
+        check([w, h] == want, f"{label}: the window is {w:g}x{h:g}, expected {want[0]}x{want[1]}")
+        panel = l["items"]["panel"]
+        check(inside(panel, [0, 0, w, h]), f"{label}: the panel {panel} lies in the window")
+        for name in VALIDATE:
+            r = l["items"].get(name)
+            check(r is not None and inside(r, panel) and inside(r, [0, 0, w, h]),
+                  f"{label}: {name} {r} is inside the panel and the window")
+        check(l["stages_clipped_headers"] == 0, f"{label}: {l['stages_clipped_headers']:g} of the table's headers are cut")
+        check(w - panel[2] >= 0.4 * w, f"{label}: the 3D view keeps {w - panel[2]:g} of {w:g} pixels")
+        win.key("F1")
+        shown = win.wait("the help overlay", lambda l: l["help_open"] and "help_overlay" in l["items"])
+        win.frames(3)
+        shown = win.layout()
+        rect = shown["items"]["help_overlay"]
+        check(rect[0] >= panel[2] - 0.5 and inside(rect, [0, 0, w, h]),
+              f"{label}: the help overlay {rect} lies right of the panel, in the window")
+        win.key("Escape")
+        win.wait("the help to close", lambda l: not l["help_open"])
+        check(win.proc.poll() is None, f"{label}: Esc closes the help first")
         win.key("Escape")
         code, _, err = win.close(timeout=60)
-        check(code == 0, f"Esc closes the validate window (exit {code}) {err.strip()[-200:]}")
+        check(code == 0, f"{label}: Esc closes the validate window (exit {code}) {err.strip()[-200:]}")
     finally:
         win.kill()
 
@@ -169,9 +222,12 @@ for size in ("1280x720", "1920x1080"):
     picture = offscreen_sections(size)
     check(window == picture and "read-outs" in (window or ""),
           f"{size}: the off-screen picture's panel sections {picture!r} are the window's {window!r}")
+practice_window_size()
 practice_refusal_and_help()
 practice_detach()
-validate_escape()
+validate_window(None, False)
+validate_window(None, True)
+validate_window("1920x1080", False)
 if failures:
     print(f"window-keys-test: FAIL: {len(failures)} check(s):\n  " + "\n  ".join(failures), file=sys.stderr)
     sys.exit(1)
