@@ -45,8 +45,8 @@ void noiseFloor(const Comparison& cmp, const std::vector<StageComparison>& stage
     for (size_t k = 0; k < n; ++k) {
       // A replica whose arc-length calibration ends at its bound has not
       // aligned the new spline with the old (on stacked loops a few do, with
-      // node residuals of millimetres): a failed comparison, not the noise.
-      // Three such replicas of 24 made self-contact-dynamic's bound 15x.
+      // node residuals of millimetres): a failed comparison, not the noise
+      // (docs/validation.md, Adequacy).
       if (std::abs(s[k].arcScale - 1) > 0.99 * kArcScaleRange) continue;
       double e = 0;
       for (size_t i = 0; i < s[k].sim.size(); ++i) e += (s[k].sim[i] - s[k].meas[i]).squaredNorm();

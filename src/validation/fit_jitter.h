@@ -2,19 +2,16 @@
 // Does a stage's simulated outcome jump under small parameter changes?
 //
 // In a dynamic stage in which loops land on one another, which stacking
-// the coil comes to rest in changes discontinuously with E: on
-// self-contact-dynamic, E 0.1 GPa apart gave the dynamic stage a
-// chi-square of 71, 267 and 61, the coil 0.1 mm lower over its whole length
-// at the middle value (still so 0.3 s later: another rest state, not a
-// swing). Such a stage cannot identify E (fit_staged.h).
+// the coil comes to rest in can change discontinuously with E: the whole
+// coil ends in another rest state between neighbouring values. Such a stage
+// cannot identify E (fit_staged.h; measured in docs/validation.md, Limits).
 //
 // Measure: the second difference of every node over the parameter at
 // c * value * exp(-d, 0, +d) cancels a smooth response to second order
 // (d^2 x''), while a jump of SD j per coordinate in independent runs gives
 // var = 6 j^2; per centre c, j = RMS(second difference) / sqrt(6). The jumps
 // are rare and large, so the centres span the +-20 % a fit searches and
-// the largest j is returned (the RMS over 3 centres at 0.9-1.1 read 0.036
-// mm on self-contact-dynamic; the largest over 9 at 0.8-1.2, 0.02-0.5 mm).
+// the largest j is returned (an RMS over a few centres misses them).
 #include <string>
 #include <vector>
 

@@ -2,18 +2,15 @@
 // Identification when a dynamic stage jumps under small parameter changes
 // (fit_jitter.h). A stage whose simulated outcome is not a function of the
 // parameters cannot identify them: a local optimiser stops in the first of
-// its dips near the start, and its Jacobian's sigma measures that dip. On
-// self-contact-dynamic (two static stages, one dynamic stage whose loops
-// land in stackings that change with E) the fit of all stages from E0
-// ended at 5.0, 5.5, 6.2, 6.8, 7.7 GPa for E0 = 5.0, 6.0, 6.8, 7.5, 8.5
-// (true 6.8), and weighting the stage by its measured jitter instead of
-// dropping it still moved the fit by 0.6 GPa between starts (the jumps are
-// rare and large, their RMS over a few dozen runs is itself noise). The
-// static stages alone fit 6.33 +- 0.37 GPa from any start.
-// So the parameters are fitted on the stages that do not jump, and every
-// stage is then simulated and compared at that optimum: the jumping
-// stages still count in the residual the diagnosis judges (explained
-// fraction, significance), in the stage errors and in the adequacy test.
+// its dips near the start, and its Jacobian's sigma measures that dip.
+// Weighting the stage by its measured jitter is not enough (the jumps are
+// rare and large: their RMS over a few dozen runs is itself noise). So the
+// parameters are fitted on the stages that do not jump, and every stage is
+// then simulated and compared at that optimum: the jumping stages still
+// count in the residual the diagnosis judges (explained fraction,
+// significance), in the stage errors and in the adequacy test. What is
+// lost is what the jumping stage alone could tell (e.g. inertia).
+// Measurements: docs/validation.md (Method, Limits).
 #include <vector>
 
 #include "validation/identify.h"
