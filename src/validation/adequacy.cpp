@@ -30,6 +30,7 @@ void noiseFloor(const Comparison& cmp, const std::vector<StageComparison>& stage
     for (double& s : at[k]) s *= c.length() / std::max(chord, 1e-300);
   }
   std::vector<double> sum(n, 0.0), sumSq(n, 0.0);
+  std::vector<int> used(n, 0);
   std::mt19937 rng(20261124);
   std::normal_distribution<double> z(0.0, 1.0);
   for (int r = 0; r < replicas; ++r) {
@@ -42,16 +43,22 @@ void noiseFloor(const Comparison& cmp, const std::vector<StageComparison>& stage
     const Comparison bc(b);
     const std::vector<StageComparison> s = bc.compare(perfect);
     for (size_t k = 0; k < n; ++k) {
+      // A replica whose arc-length calibration ends at its bound has not
+      // aligned the new spline with the old (on stacked loops a few do, with
+      // node residuals of millimetres): a failed comparison, not the noise
+      // (docs/validation.md, Adequacy).
+      if (std::abs(s[k].arcScale - 1) > 0.99 * kArcScaleRange) continue;
       double e = 0;
       for (size_t i = 0; i < s[k].sim.size(); ++i) e += (s[k].sim[i] - s[k].meas[i]).squaredNorm();
       e /= std::max<double>(1, double(s[k].sim.size()));
-      sum[k] += e, sumSq[k] += e * e;
+      sum[k] += e, sumSq[k] += e * e, ++used[k];
     }
   }
   mean.resize(n), sd.resize(n);
   for (size_t k = 0; k < n; ++k) {
-    mean[k] = sum[k] / replicas;
-    sd[k] = std::sqrt(std::max(0.0, sumSq[k] / replicas - mean[k] * mean[k]) * replicas / std::max(1, replicas - 1));
+    const int r = std::max(1, used[k]);
+    mean[k] = sum[k] / r;
+    sd[k] = std::sqrt(std::max(0.0, sumSq[k] / r - mean[k] * mean[k]) * r / std::max(1, r - 1));
   }
 }
 

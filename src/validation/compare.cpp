@@ -31,7 +31,7 @@ double arcScale(const SmoothingSpline& sp, const StageSim& sim, double s0) {
   };
   // Golden section on [1 - kArcScaleRange, 1 + kArcScaleRange] (unimodal: the
   // largest shift, 5 % of the deployed length, is well below a loop).
-  constexpr double kArcScaleRange = 0.05, g = 0.6180339887498949;
+  constexpr double g = 0.6180339887498949;
   double a = 1 - kArcScaleRange, b = 1 + kArcScaleRange;
   double x1 = b - g * (b - a), x2 = a + g * (b - a), f1 = cost(x1), f2 = cost(x2);
   for (int it = 0; it < 40 && b - a > 1e-7; ++it) {

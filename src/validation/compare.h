@@ -13,6 +13,9 @@
 
 namespace coilsim::validation {
 
+// The arc-length calibration lambda lies in [1 - this, 1 + this] (compare.cpp).
+inline constexpr double kArcScaleRange = 0.05;
+
 struct StageComparison {
   bool ok = false;
   std::string message;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "validation/fit_staged.h"
 #include "validation/params.h"
 #include "validation/significance.h"
 #include "validation/text.h"
@@ -141,7 +142,7 @@ CandidateResult refit(StageSimulator& sim, const Comparison& cmp, const ModelPar
   f2.params = baseFit;
   f2.params.insert(f2.params.end(), c.params.begin(), c.params.end());
   f2.regularised = true;
-  cr.fit = identify(sim, cmp, s, f2);
+  cr.fit = identifySmoothFirst(sim, cmp, s, f2).fit;
   if (!cr.fit.ok) {
     cr.note = "refit failed: " + cr.fit.message;
     return cr;
