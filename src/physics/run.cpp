@@ -6,6 +6,7 @@
 #include "physics/contact/clearance.h"
 #include "physics/contact/detect.h"
 #include "physics/deployment.h"
+#include "physics/pusher.h"
 
 namespace coilsim {
 namespace {
@@ -114,6 +115,8 @@ void moveDevice(const Model& model, State& state) {
       if (m.retractLeft == 0) m.retractRate = 0;
     }
   }
+  // The pusher's force limit acts in the step on what this push inserts (physics/pusher.h).
+  const double pushFrom = deployed, pushRate = m.pushRate, pushLeft = m.pushLeft;
   if (m.pushRate != 0) {
     deployed += advanceBy(m.pushRate, m.pushLeft, dt);
     if (m.pushLeft == 0) m.pushRate = 0;
@@ -135,6 +138,7 @@ void moveDevice(const Model& model, State& state) {
     notes.push_back("the coil is back inside the catheter");
   }
   if (!ds.detached && (deployed != ds.deployed || twist != ds.twist)) setDeployment(model, state, deployed, twist);
+  armPusher(model, state, pushFrom, pushRate > 0 ? deployed - pushFrom : 0.0, pushRate, pushLeft);
   syncCatheterDrawing(model, state);
 }
 
