@@ -186,7 +186,7 @@ Deployment addDeployment(const DeploymentDef& d, ModelDef& def) {
     bad("initial deployed length must lie in [0, coil length]");
   if (!std::isfinite(d.initialTwist)) bad("initial twist is not finite");
   if (!(d.maxPushSpeed > 0) || !(d.maxTwistRate > 0)) bad("speed limits must be positive");
-  if (!(d.maxPushForce > 0) || !std::isfinite(d.maxPushForce)) bad("the push force limit must be a finite positive number");
+  if (!(d.maxPushForce > 0)) bad("the push force limit must be positive (infinite: the insertion is prescribed)");
   const Vec3 dir = d.tip.direction, nrm = d.tip.normal;
   if (!dir.allFinite() || dir.norm() < 1e-12) bad("tip direction must be a non-zero vector");
   if (!nrm.allFinite() || nrm.cross(dir).norm() < 1e-9 * nrm.norm() * dir.norm())

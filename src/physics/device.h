@@ -70,7 +70,9 @@ struct DeploymentDef {
   double initialTwist = 0;              // rad
   double maxPushSpeed = 0.05;           // m/s: faster pushes are refused (a hand does not push 5 cm/s)
   double maxTwistRate = 4 * M_PI;       // rad/s
-  double maxPushForce = kMaxPushForce.defaultValue * kMaxPushForce.toSI;  // N: above it the push stalls (physics/pusher.h)
+  // N: above it the push stalls (physics/pusher.h); INFINITY prescribes the
+  // insertion whatever resists it (tests that drive a wall by displacement).
+  double maxPushForce = kMaxPushForce.defaultValue * kMaxPushForce.toSI;
   // false: the rigid tip does not hold the coil's tip node; an effect that
   // models a compliant catheter holds it instead (the constraint stays,
   // holding no DOF, so the chain still counts as held for the static solver).

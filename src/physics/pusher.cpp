@@ -95,7 +95,9 @@ void finishPush(const Model& model, State& state, bool stepOk) {
   PusherState& p = state.device.pusher;
   const bool wasStalled = p.stalled;
   if (!p.armed) {
-    p.force = 0, p.stalled = false;
+    // Between pushes the pusher is at rest; a push's step that moved a node
+    // through the tip keeps what the push felt last.
+    if (!(state.device.motion.pushRate > 0)) p.force = 0, p.stalled = false;
     return;
   }
   p.armed = false;

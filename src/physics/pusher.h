@@ -21,7 +21,11 @@
 // unlimited one), else the s in [-1, 1) at which N(s) equals the limit,
 // N taken affine between s = 0 and s = 1 (a pusher that the coil pushes
 // back harder than the limit yields, at most at the commanded speed).
-// advance() then sets the deployed length to the insertion reached.
+// advance() then sets the deployed length to the insertion reached. A step
+// that inserts or withdraws a node at the tip is not limited: the new node,
+// placed on the chord of a curved beam, jolts the partial beam by itself
+// (newtons for the stiff coils), which the limit would take for resistance
+// and stall on for ever at that node.
 #include "physics/model.h"
 #include "physics/state.h"
 

@@ -137,8 +137,12 @@ void moveDevice(const Model& model, State& state) {
     m.pushRate = 0;
     notes.push_back("the coil is back inside the catheter");
   }
+  const int nodesBefore = state.rods[size_t(dep.chainRod)].activeNodes;
   if (!ds.detached && (deployed != ds.deployed || twist != ds.twist)) setDeployment(model, state, deployed, twist);
-  armPusher(model, state, pushFrom, pushRate > 0 ? deployed - pushFrom : 0.0, pushRate, pushLeft);
+  // A step that inserts or withdraws a node at the tip is not limited: the
+  // new node's placement jolts the partial beam by itself (physics/pusher.h).
+  const bool sameNodes = state.rods[size_t(dep.chainRod)].activeNodes == nodesBefore;
+  armPusher(model, state, pushFrom, pushRate > 0 && sameNodes ? deployed - pushFrom : 0.0, pushRate, pushLeft);
   syncCatheterDrawing(model, state);
 }
 
