@@ -204,6 +204,7 @@ DeploymentDef compileDeployment(const SceneSpec& s, const DeploymentSpec& d) {
   def.initialTwist = degToRad(d.initialTwistDeg);
   def.maxPushSpeed = mmPerSToMPerS(d.maxPushSpeedMmS);
   def.maxTwistRate = degPerSToRadPerS(d.maxTwistRateDegS);
+  def.maxPushForce = d.maxPushForceMn * kMaxPushForce.toSI;
   return def;
 }
 
