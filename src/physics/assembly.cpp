@@ -16,18 +16,16 @@ namespace {
 
 // The geometric stiffness N / l of a stretched element, where it matters.
 // The material tangent K leaves out the axial force N; across the element,
-// N / l against its bending stiffness 12 B / l^3 is N l^2 / (12 B) (the
-// beam-column parameter N l^2 / B: Timoshenko & Gere, Theory of Elastic
-// Stability, sec. 1.11). A wound coil is stiff along its axis (EA some kN)
-// and soft in bending (B about 0.002 N mm^2): the newtons of tension a pull
+// N / l against its bending stiffness 12 B / l^3 is N l^2 / (12 B) (N l^2 / B
+// is the beam-column parameter of Timoshenko & Gere, Theory of Elastic
+// Stability, ch. 1). A wound coil is stiff along its axis (EA some kN) and
+// soft in bending (B about 0.002 N mm^2): the newtons of tension a pull
 // through a sharp bend at the catheter tip leaves in a 0.5 mm element are
 // thousands of N/m across it against some 175 N/m of bending, and a step
 // that takes them explicitly overshoots sideways, turns the element,
 // stretches it further and blows up (docs/input-limits.md, "The soak's
-// twist-and-pull"). Where N / l is under a tenth of the bending stiffness
-// it changes the step by less than the beam's own stability functions do,
-// and is left out: the hot loop, and runs that never get there, stay as
-// they were.
+// twist-and-pull"). Under a tenth of the bending stiffness it is left out,
+// so that the hot loop, and runs that never get there, stay as they were.
 constexpr double kStringFraction = 0.1;
 
 double stringStiffness(const BeamRest& rest, const BeamEval& ev) {

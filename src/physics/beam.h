@@ -53,8 +53,9 @@ void evalBeam(const BeamRest& rest, const Vec3& xa, const Quat& qa, const Vec3& 
 // element's s K velocity to `product` (two entries). `string` > 0 adds the
 // geometric stiffness of a tensile axial force N, string = s N / l (l the
 // current length): string (1 - t t^T) on the translations, the stiffness of
-// a taut string (Przemieniecki, Theory of Matrix Structural Analysis,
-// sec. 15.2, its P / l term), in the blocks and in the product.
+// a taut string (the P / l term of a bar's geometric stiffness matrix, e.g.
+// Przemieniecki, Theory of Matrix Structural Analysis, the chapter on
+// stability), in the blocks and in the product.
 void addBeamTangent(const BeamRest& rest, const Mat3& rotation, double scale, Mat6& diagA, Mat6& lowerBA,
                     Mat6& diagB, const Vec6* velocity = nullptr, Vec6* product = nullptr, double string = 0);
 
