@@ -50,9 +50,14 @@ void evalBeam(const BeamRest& rest, const Vec3& xa, const Quat& qa, const Vec3& 
 // `BeamEval::rotation`, times `scale`, straight into a block-tridiagonal
 // chain without the copies through BeamEval: K(a,a) += s kaa, K(b,a) = s kba,
 // K(b,b) = s kbb. With `velocity` (the two nodes' (v, w)) it also adds this
-// element's s K velocity to `product` (two entries).
+// element's s K velocity to `product` (two entries). `string` > 0 adds the
+// geometric stiffness of a tensile axial force N, string = s N / l (l the
+// current length): string (1 - t t^T) on the translations, the stiffness of
+// a taut string (the P / l term of a bar's geometric stiffness matrix, e.g.
+// Przemieniecki, Theory of Matrix Structural Analysis, the chapter on
+// stability), in the blocks and in the product.
 void addBeamTangent(const BeamRest& rest, const Mat3& rotation, double scale, Mat6& diagA, Mat6& lowerBA,
-                    Mat6& diagB, const Vec6* velocity = nullptr, Vec6* product = nullptr);
+                    Mat6& diagB, const Vec6* velocity = nullptr, Vec6* product = nullptr, double string = 0);
 
 // Element rest constants from the rest poses of its two nodes.
 BeamRest makeBeamRest(const Vec3& xa, const Quat& qa, const Vec3& xb, const Quat& qb,

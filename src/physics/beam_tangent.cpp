@@ -56,7 +56,7 @@ void fillBlocks(const BeamRest& r, const Mat3& R, double s, Mat6& ka, Mat3& rc) 
 const Mat6 kSignsBB = blockSigns(1, -1, -1, 1), kSignsBA = blockSigns(-1, -1, 1, 1);
 
 void addBlocks(const BeamRest& r, const Mat3& R, double s, Mat6& diagA, Mat6& lowerBA, Mat6& diagB,
-               const Vec6* velocity, Vec6* product) {
+               const Vec6* velocity, Vec6* product, double string) {
   Mat6 ka;
   Mat3 rc;
   fillBlocks(r, R, s, ka, rc);
@@ -64,11 +64,21 @@ void addBlocks(const BeamRest& r, const Mat3& R, double s, Mat6& diagA, Mat6& lo
   diagB = ka.cwiseProduct(kSignsBB);
   lowerBA = ka.cwiseProduct(kSignsBA);
   lowerBA.bottomRightCorner<3, 3>() = rc;
+  // A taut string's stiffness across its axis: string (1 - t t^T).
+  Mat3 g = Mat3::Zero();
+  if (string > 0) {
+    const Vec3 t = R.col(0);
+    g = string * (Mat3::Identity() - t * t.transpose());
+    diagA.topLeftCorner<3, 3>() += g;
+    diagB.topLeftCorner<3, 3>() += g;
+    lowerBA.topLeftCorner<3, 3>() -= g;
+  }
   if (!velocity) return;
   const Vec3 wa = velocity[0].tail<3>(), wb = velocity[1].tail<3>();
   Vec6 x;
   x << velocity[0].head<3>() - velocity[1].head<3>(), wa + wb;
-  const Vec3 pt = ka.topRows<3>() * x;
+  Vec3 pt = ka.topRows<3>() * x;
+  if (string > 0) pt += g * x.head<3>();
   const Vec3 q = ka.bottomLeftCorner<3, 3>() * x.head<3>();
   const auto rs = ka.bottomRightCorner<3, 3>();
   product[0].head<3>() += pt;
@@ -80,8 +90,8 @@ void addBlocks(const BeamRest& r, const Mat3& R, double s, Mat6& diagA, Mat6& lo
 }  // namespace
 
 void addBeamTangent(const BeamRest& rest, const Mat3& rotation, double scale, Mat6& diagA, Mat6& lowerBA,
-                    Mat6& diagB, const Vec6* velocity, Vec6* product) {
-  addBlocks(rest, rotation, scale, diagA, lowerBA, diagB, velocity, product);
+                    Mat6& diagB, const Vec6* velocity, Vec6* product, double string) {
+  addBlocks(rest, rotation, scale, diagA, lowerBA, diagB, velocity, product, string);
 }
 
 }  // namespace coilsim
