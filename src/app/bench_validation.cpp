@@ -24,12 +24,11 @@ Measurement benchMeasurement(bool hidden) {
   m.name = "bench";
   m.coil.length = 0.120;
   m.coil.wireRadius = 0.15e-3;
-  m.coil.massPerLength = 21450 * M_PI * 0.15e-3 * 0.15e-3;
+  m.coil.density = 21450;
   m.coil.rest.type = RestShapeDef::Type::Helix;
   m.coil.rest.loopDiameter = 8e-3;
   m.coil.rest.pitch = 5e-3;
   m.coil.youngModulus = 7.0e9;
-  m.coil.hasYoungModulus = true;
   m.coil.poissonRatio = 0.39;
   m.tip.direction = Vec3::UnitX();
   m.tip.normal = Vec3::UnitZ();

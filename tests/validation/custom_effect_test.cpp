@@ -41,12 +41,11 @@ Measurement skeleton() {
   m.name = "side flow";
   m.coil.length = 0.080;
   m.coil.wireRadius = kWire;
-  m.coil.massPerLength = 21450 * M_PI * kWire * kWire;  // weight 6.6 mN/m: the flow is 23 % of it
+  m.coil.density = 21450;  // weight 6.6 mN/m: the flow is 23 % of it
   m.coil.rest.type = RestShapeDef::Type::Helix;
   m.coil.rest.loopDiameter = 8e-3;
   m.coil.rest.pitch = 5e-3;
   m.coil.youngModulus = 1.2 * kE;
-  m.coil.hasYoungModulus = true;
   m.coil.poissonRatio = 0.39;
   m.tip.direction = Vec3::UnitX();
   m.tip.normal = Vec3::UnitZ();

@@ -14,9 +14,8 @@ Measurement straightCantilever() {
   m.name = "straight";
   m.coil.length = 0.03;
   m.coil.wireRadius = 0.1e-3;
-  m.coil.massPerLength = 21450 * M_PI * 1e-8;
+  m.coil.density = 21450;
   m.coil.youngModulus = 7e9;
-  m.coil.hasYoungModulus = true;
   m.tip.direction = Vec3::UnitX();
   m.tip.normal = Vec3::UnitZ();
   Stage s;
