@@ -68,7 +68,7 @@ void benchValidationFigures(const std::function<void(const std::string&, double)
   for (int k = 0; k < runs; ++k) sim.run(ModelParams::nominal(m), false);
   const double one = secondsSince(t0) / runs;
   FitOptions fo;
-  fo.params = {"young_modulus"};
+  fo.params = {youngModulusFit()};
   t0 = std::chrono::steady_clock::now();
   const FitResult f = identify(sim, cmp, ModelParams::nominal(m), fo);
   const double fit = secondsSince(t0);

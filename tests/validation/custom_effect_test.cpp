@@ -83,7 +83,7 @@ TEST(CustomEffect, RegisteredInTheTestMakesTheErrorFall) {
   StageSimulator csim(control, coarse);
   Comparison ccmp(control);
   FitOptions fe;
-  fe.params = {"young_modulus"};
+  fe.params = {"young_modulus_gpa"};
   const FitResult cf = identify(csim, ccmp, ModelParams::nominal(control), fe);
   ASSERT_TRUE(cf.ok) << cf.message;
   const std::vector<double> controlErr = stageErrors(csim, ccmp, cf.params);
@@ -98,7 +98,7 @@ TEST(CustomEffect, RegisteredInTheTestMakesTheErrorFall) {
   start.effects.push_back(EffectRegistry::global().use("test_side_flow"));
   start.effects.back().set("force_mn_per_m", 0.0);
   FitOptions fw;
-  fw.params = {"young_modulus", "test_side_flow.force_mn_per_m"};
+  fw.params = {"young_modulus_gpa", "test_side_flow.force_mn_per_m"};
   const FitResult with = identify(sim, cmp, start, fw);
   ASSERT_TRUE(with.ok) << with.message;
   const std::vector<double> after = stageErrors(sim, cmp, with.params);

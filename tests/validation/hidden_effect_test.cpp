@@ -111,7 +111,7 @@ std::vector<double> controlErrors(const Measurement& sk) {
   StageSimulator sim(m, coarse());
   Comparison cmp(m);
   FitOptions fo;
-  fo.params = {"young_modulus"};
+  fo.params = {"young_modulus_gpa"};
   const FitResult f = identify(sim, cmp, ModelParams::nominal(m), fo);
   EXPECT_TRUE(f.ok) << f.message;
   std::vector<double> e;
@@ -254,7 +254,7 @@ TEST(HiddenEffect, BuoyancyIsAbsorbedByE) {
   StageSimulator csim(c, coarse());
   Comparison ccmp(c);
   FitOptions fe;
-  fe.params = {"young_modulus"};
+  fe.params = {"young_modulus_gpa"};
   const FitResult cf = identify(csim, ccmp, ModelParams::nominal(c), fe);
   ASSERT_TRUE(cf.ok) << cf.message;
   const FittedValue &eb = d.baseline.fitted[0], &ec = cf.fitted[0];

@@ -40,7 +40,7 @@ TEST(Identify, StopRequestEndsTheFitAtOnce) {
   StageSimulator sim(m, {2e-3, 2e-3, 1e-3});
   Comparison cmp(m);
   FitOptions o;
-  o.params = {"young_modulus"};
+  o.params = {"young_modulus_gpa"};
   int asked = 0;
   o.stop = [&] { return ++asked > 3; };
   const FitResult r = identify(sim, cmp, ModelParams::nominal(m), o);
@@ -67,7 +67,7 @@ TEST(Identify, AParameterTheDataDoNotSeeIsNotIdentifiable) {
   ModelParams start = ModelParams::nominal(m);
   start.effects.push_back(effectFromFile("drag", m));
   FitOptions o;
-  o.params = {"young_modulus", "drag.viscosity_pa_s"};
+  o.params = {"young_modulus_gpa", "drag.viscosity_pa_s"};
   const FitResult r = identify(sim, cmp, start, o);
   ASSERT_TRUE(r.ok) << r.message;
   ASSERT_EQ(r.fitted.size(), 2u);
