@@ -24,12 +24,11 @@ Measurement benchMeasurement(bool hidden) {
   m.name = "bench";
   m.coil.length = 0.120;
   m.coil.wireRadius = 0.15e-3;
-  m.coil.massPerLength = 21450 * M_PI * 0.15e-3 * 0.15e-3;
+  m.coil.density = 21450;
   m.coil.rest.type = RestShapeDef::Type::Helix;
   m.coil.rest.loopDiameter = 8e-3;
   m.coil.rest.pitch = 5e-3;
   m.coil.youngModulus = 7.0e9;
-  m.coil.hasYoungModulus = true;
   m.coil.poissonRatio = 0.39;
   m.tip.direction = Vec3::UnitX();
   m.tip.normal = Vec3::UnitZ();
@@ -69,7 +68,7 @@ void benchValidationFigures(const std::function<void(const std::string&, double)
   for (int k = 0; k < runs; ++k) sim.run(ModelParams::nominal(m), false);
   const double one = secondsSince(t0) / runs;
   FitOptions fo;
-  fo.params = {"young_modulus"};
+  fo.params = {youngModulusFit()};
   t0 = std::chrono::steady_clock::now();
   const FitResult f = identify(sim, cmp, ModelParams::nominal(m), fo);
   const double fit = secondsSince(t0);

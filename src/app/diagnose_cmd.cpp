@@ -232,7 +232,7 @@ int runDiagnose(const std::vector<std::string>& argsIn) {
   if (several) {
     std::vector<JointFile> jf;
     std::vector<std::string> fit = expandFitNames(a.fit, files[0].m);
-    if (std::none_of(fit.begin(), fit.end(), isYoungModulus)) fit.insert(fit.begin(), "young_modulus");
+    if (std::none_of(fit.begin(), fit.end(), isYoungModulus)) fit.insert(fit.begin(), youngModulusFit());
     for (size_t i = 0; i < files.size(); ++i) jf.push_back({sims[i].get(), cmps[i].get(), ModelParams::nominal(files[i].m)});
     // One coil: the first file's nominal coil values for all (each keeps its setup).
     for (JointFile& f : jf) f.start.youngModulus = jf[0].start.youngModulus, f.start.poissonRatio = jf[0].start.poissonRatio;

@@ -12,7 +12,7 @@
 
 namespace coilsim::app {
 
-// coilsim validate FILE [--effects a,b] [--fit young_modulus,...] --out DIR
+// coilsim validate FILE [--effects a,b] [--fit young_modulus_gpa,...] --out DIR
 //   [--spacing MM] [--push-increment MM] [--no-plots] [--quiet]
 // Writes DIR/report.json, DIR/report.md and the PNGs. Returns 0, 1 if a
 // stage cannot be simulated, 2 on a bad command line or measurement file.

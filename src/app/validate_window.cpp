@@ -1,5 +1,5 @@
 // The validation panel's data: the base model at the file's nominal values,
-// and a fit callback that refits with the toggled effects on (young_modulus
+// and a fit callback that refits with the toggled effects on (young_modulus_gpa
 // and each effect's usual parameters, or what --fit names) on a simulator
 // of its own, so that it can run on the panel's background thread.
 #include "app/validate_window.h"
@@ -150,7 +150,7 @@ int runValidateWindow(const WorkbenchArgs& a, const WindowArgs& w) {
   h.initiallyOn = a.effects;
   h.before = view(m, before);
   h.errorScale = errorLegend();
-  const std::vector<std::string> baseFit = a.fit.empty() ? std::vector<std::string>{"young_modulus"} : a.fit;
+  const std::vector<std::string> baseFit = a.fit.empty() ? std::vector<std::string>{youngModulusFit()} : a.fit;
   std::vector<double> beforeErrors;
   for (const StageComparison& s : before) beforeErrors.push_back(s.ok ? s.metrics.stageError : NAN);
   h.fit = [m, so, baseFit, beforeErrors, quiet = a.quiet](const std::vector<std::string>& effects, const ui::FitProgress& progress,

@@ -1,8 +1,10 @@
 // coil-measurement/1 reader and writer; units convert only through units.h.
 #include "io/measurement.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "io/json_reader.h"
 #include "io/json_writer.h"
@@ -13,7 +15,6 @@ namespace coilsim::io {
 namespace {
 
 using validation::Measurement;
-using validation::RestShapeDef;
 using validation::Stage;
 
 std::string fmt(double v) {
@@ -63,6 +64,13 @@ std::vector<Vec3> pointsMm(const JsonNode& n, std::string_view what) {
   return out;
 }
 
+// The file's polyline runs from the distal tip; a coil's rest shape (as a
+// deployment samples it) from the proximal end.
+std::vector<Vec3> reversed(std::vector<Vec3> points) {
+  std::reverse(points.begin(), points.end());
+  return points;
+}
+
 RestShapeDef readRest(const JsonNode& n, double lengthM, double wireRadiusM) {
   if (!n.isObject()) n.expected("an object with a \"type\": straight, helix or polyline");
   RestShapeDef r;
@@ -83,20 +91,25 @@ RestShapeDef readRest(const JsonNode& n, double lengthM, double wireRadiusM) {
     return r;
   }
   r.type = RestShapeDef::Type::Polyline;
+  r.frames = FrameRule::Frenet;
   const JsonNode pts = n.child("points_mm");
-  r.points = pointsMm(pts, "an array of at least 2 points [x, y, z] in mm, from the distal tip to the proximal end");
+  const std::vector<Vec3> fromTip =
+      pointsMm(pts, "an array of at least 2 points [x, y, z] in mm, from the distal tip to the proximal end");
   double arc = 0;
-  for (size_t i = 1; i < r.points.size(); ++i) arc += (r.points[i] - r.points[i - 1]).norm();
+  for (size_t i = 1; i < fromTip.size(); ++i) arc += (fromTip[i] - fromTip[i - 1]).norm();
   if (std::abs(arc - lengthM) > 0.01 * lengthM)
     pts.fail("the polyline is " + fmt(units::mToMm(arc)) + " mm long but /coil/length_mm is " + fmt(units::mToMm(lengthM)) +
              " mm; they must agree within 1 %");
+  r.points = reversed(fromTip);
   if (auto t = n.optional("twist_deg_per_mm"))
     r.twistPerLength = units::degPerMmToRadPerM(t->number(Bounds::closed(-360, 360, "deg/mm")));
   return r;
 }
 
-validation::CoilDef readCoil(const JsonNode& n) {
-  validation::CoilDef c;
+// The coil as a solid circular wire; its mass per length from density_g_cm3
+// or mass_g (then as a density: mass / (pi r^2 length)).
+void readCoil(const JsonNode& n, Measurement& m) {
+  RodSpec& c = m.coil;
   if (!n.isObject()) n.expected("an object describing the coil");
   c.length = readSI(n, rodq::kLength);
   c.wireRadius = readSI(n, rodq::kWireRadius);
@@ -105,28 +118,25 @@ validation::CoilDef readCoil(const JsonNode& n) {
   const auto mass = n.optional("mass_g");
   if (!density && !mass)
     n.child(rodq::kDensity.spec.name).expected(boundsOf(rodq::kDensity).describe() + ", or \"mass_g\" instead");
-  if (density) c.massPerLength = readSI(n, rodq::kDensity) * area;
+  if (density) c.density = readSI(n, rodq::kDensity);
   if (mass) {
     const double perLength = mass->number(Bounds::positive()) * 1e-3 / c.length;  // g -> kg
-    if (density && std::abs(perLength - c.massPerLength) > 0.01 * c.massPerLength)
+    const double densityPerLength = c.density * area;
+    if (density && std::abs(perLength - densityPerLength) > 0.01 * densityPerLength)
       mass->fail("mass_g and density_g_cm3 disagree by more than 1 % (" + fmt(perLength * c.length * 1e3) + " g vs " +
-                 fmt(c.massPerLength * c.length * 1e3) + " g); give one of them");
+                 fmt(densityPerLength * c.length * 1e3) + " g); give one of them");
     const double implied = units::kgm3ToGcm3(perLength / area);
     if (!(implied >= 1e-3 && implied <= 1000))
       mass->fail("mass_g implies a wire density of " + fmt(implied) +
                  " g/cm3 (mass / (pi r^2 length)), outside [0.001, 1000] g/cm3: check its unit");
-    c.massPerLength = perLength;
+    c.density = perLength / area;
   }
   c.rest = readRest(n.child("rest_shape"), c.length, c.wireRadius);
-  if (n.optional(rodq::kYoungModulus.spec.name)) {
-    c.youngModulus = readSI(n, rodq::kYoungModulus);
-    c.hasYoungModulus = true;
-  }
+  if (n.optional(rodq::kYoungModulus.spec.name)) c.youngModulus = readSI(n, rodq::kYoungModulus);
   if (n.optional(rodq::kPoissonRatio.spec.name)) {
     c.poissonRatio = readSI(n, rodq::kPoissonRatio);
-    c.hasPoissonRatio = true;
+    m.givesPoissonRatio = true;
   }
-  return c;
 }
 
 Stage readStage(const JsonNode& n, double coilLength, const Vec3& tip) {
@@ -180,7 +190,7 @@ Measurement fromDocument(const nlohmann::json& doc, const std::string& file) {
   m.file = file;
   m.name = root.child("name").string();
   if (auto d = root.optional("description")) m.description = d->string(true);
-  m.coil = readCoil(root.child("coil"));
+  readCoil(root.child("coil"), m);
 
   const JsonNode setup = root.child("setup");
   if (!setup.isObject()) setup.expected("an object with gravity_m_s2 and catheter_tip");
@@ -230,7 +240,7 @@ std::string formatMeasurement(const Measurement& m) {
   ordered_json coil;
   coil["length_mm"] = units::mToMm(m.coil.length);
   coil["wire_radius_mm"] = units::mToMm(m.coil.wireRadius);
-  coil["mass_g"] = m.coil.massPerLength * m.coil.length * 1e3;
+  coil["mass_g"] = massPerLength(m.coil) * m.coil.length * 1e3;
   ordered_json rest;
   switch (m.coil.rest.type) {
     case RestShapeDef::Type::Straight: rest["type"] = "straight"; break;
@@ -240,16 +250,17 @@ std::string formatMeasurement(const Measurement& m) {
       rest["pitch_mm"] = units::mToMm(m.coil.rest.pitch);
       rest["handedness"] = m.coil.rest.rightHanded ? "right" : "left";
       break;
+    case RestShapeDef::Type::Birdcage: throw std::invalid_argument("coil-measurement/1 has no bird-cage rest shape");
     case RestShapeDef::Type::Polyline:
       rest["type"] = "polyline";
       rest["points_mm"] = ordered_json::array();
-      for (const Vec3& p : m.coil.rest.points) rest["points_mm"].push_back(mm(p));
+      for (const Vec3& p : reversed(m.coil.rest.points)) rest["points_mm"].push_back(mm(p));
       rest["twist_deg_per_mm"] = units::radToDeg(m.coil.rest.twistPerLength) * units::kMetresPerMm;
       break;
   }
   coil["rest_shape"] = rest;
-  if (m.coil.hasYoungModulus) coil["young_modulus_gpa"] = units::paToGpa(m.coil.youngModulus);
-  if (m.coil.hasPoissonRatio) coil["poisson_ratio"] = m.coil.poissonRatio;
+  if (m.coil.youngModulus > 0) coil["young_modulus_gpa"] = units::paToGpa(m.coil.youngModulus);
+  if (m.givesPoissonRatio) coil["poisson_ratio"] = m.coil.poissonRatio;
   j["coil"] = coil;
   ordered_json setup;
   setup["gravity_m_s2"] = {m.gravity.x(), m.gravity.y(), m.gravity.z()};

@@ -20,6 +20,8 @@ validation::Measurement parseMeasurement(std::string_view text, const std::strin
 
 // The file text of `m` (millimetres, GPa, degrees), which parseMeasurement
 // reads back to the same values up to rounding of the printed digits.
+// Throws std::invalid_argument for a rest shape the format has no name for
+// (a bird-cage).
 std::string formatMeasurement(const validation::Measurement& m);
 
 }  // namespace coilsim::io

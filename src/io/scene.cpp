@@ -134,54 +134,60 @@ void checkScene(const SceneSpec& s) {
 
 namespace {
 
-// Rest shape, material and section of a rod or of the deployment's coil, in SI.
-RestCurve compileRest(const SceneSpec& s, const RestShapeSpec& rest, double length, int beams, const std::string& at) {
+// The physics description of a rod or of the deployment's coil (SI).
+::coilsim::RodSpec rodSpecOf(double lengthMm, const RestShapeSpec& r, const MaterialSpec& m, const SectionSpec& sec) {
   using namespace units;
+  ::coilsim::RodSpec rod;
+  rod.length = mmToM(lengthMm);
+  rod.rest.type = r.type;
+  rod.rest.loopDiameter = mmToM(r.loopDiameterMm);
+  rod.rest.pitch = mmToM(r.pitchMm);
+  rod.rest.rightHanded = r.rightHanded;
+  for (const Vec3& p : r.pointsMm) rod.rest.points.push_back(p * kMetresPerMm);
+  rod.rest.frames = r.frames;
+  rod.rest.twistPerLength = degPerMmToRadPerM(r.twistDegPerMm);
+  rod.rest.sphereDiameter = mmToM(r.sphereDiameterMm);
+  rod.rest.planeTurnPerLoop = degToRad(r.planeTurnPerLoopDeg);
+  rod.youngModulus = gpaToPa(m.youngModulusGpa);
+  rod.poissonRatio = m.poissonRatio;
+  rod.density = gcm3ToKgm3(m.densityGcm3);
+  if (sec.circular) {
+    rod.wireRadius = mmToM(sec.wireRadiusMm);
+  } else {
+    Section& out = rod.explicitSection;
+    out.area = mm2ToM2(sec.areaMm2);
+    out.iy = out.iz = mm4ToM4(sec.inertiaMm4);
+    out.torsion = mm4ToM4(sec.torsionMm4);
+    out.shearFactor = sec.shearFactor;
+    out.radius = mmToM(sec.outerRadiusMm);
+  }
+  return rod;
+}
+
+RestCurve compileRest(const SceneSpec& s, const ::coilsim::RodSpec& rod, int beams, const std::string& at) {
   try {
-    switch (rest.type) {
-      case RestShapeSpec::Type::Straight: return makeStraight(length, beams);
-      case RestShapeSpec::Type::Helix:
-        return makeHelix(length, beams, mmToM(rest.loopDiameterMm), mmToM(rest.pitchMm), rest.rightHanded);
-      case RestShapeSpec::Type::Polyline: {
-        std::vector<Vec3> points;
-        for (const Vec3& p : rest.pointsMm) points.push_back(p * kMetresPerMm);
-        return makePolyline(points, length, beams, rest.frames, degPerMmToRadPerM(rest.twistDegPerMm));
-      }
-      case RestShapeSpec::Type::Birdcage:
-        return makeBirdcage(length, beams, mmToM(rest.sphereDiameterMm), degToRad(rest.planeTurnPerLoopDeg));
-    }
+    return makeRest(rod.rest, rod.length, beams);
   } catch (const std::exception& ex) {
     fail(s, at + "/rest_shape", std::string("cannot build the rest shape: ") + ex.what());
   }
-  fail(s, at + "/rest_shape", "unknown rest shape type");
 }
 
+// A flexible catheter's tube (its section comes from its diameters).
 Material compileMaterial(const MaterialSpec& m) {
   const double young = units::gpaToPa(m.youngModulusGpa);
   return {young, shearModulusOf(young, m.poissonRatio), units::gcm3ToKgm3(m.densityGcm3)};
-}
-
-Section compileSection(const SectionSpec& sec, double poissonRatio) {
-  using namespace units;
-  if (sec.circular) return circularSection(mmToM(sec.wireRadiusMm), poissonRatio);
-  Section out;
-  out.area = mm2ToM2(sec.areaMm2);
-  out.iy = out.iz = mm4ToM4(sec.inertiaMm4);
-  out.torsion = mm4ToM4(sec.torsionMm4);
-  out.shearFactor = sec.shearFactor;
-  out.radius = mmToM(sec.outerRadiusMm);
-  return out;
 }
 
 DeploymentDef compileDeployment(const SceneSpec& s, const DeploymentSpec& d) {
   using namespace units;
   DeploymentDef def;
   def.coilName = d.coilName;
-  def.coilLength = mmToM(d.lengthMm);
+  const ::coilsim::RodSpec coil = rodSpecOf(d.lengthMm, d.rest, d.material, d.section);
+  def.coilLength = coil.length;
   def.coilBeams = d.beams;
-  def.coilRest = compileRest(s, d.rest, def.coilLength, d.beams, "/deployment/coil");
-  def.coilMaterial = compileMaterial(d.material);
-  def.coilSection = compileSection(d.section, d.material.poissonRatio);
+  def.coilRest = compileRest(s, coil, d.beams, "/deployment/coil");
+  def.coilMaterial = materialOf(coil);
+  def.coilSection = sectionOf(coil);
   def.tip.position = d.catheter.tipPositionMm * kMetresPerMm;
   def.tip.direction = d.catheter.direction;
   def.tip.normal = d.catheter.referenceNormal;
@@ -237,14 +243,15 @@ ModelDef compileScene(const SceneSpec& s) {
     RodDef d;
     d.name = r.name;
     d.role = r.role;
-    d.length = mmToM(r.lengthMm);
+    const ::coilsim::RodSpec rod = rodSpecOf(r.lengthMm, r.rest, r.material, r.section);
+    d.length = rod.length;
     d.beams = r.beams;
-    d.rest = compileRest(s, r.rest, d.length, d.beams, rodPath(k));
+    d.rest = compileRest(s, rod, d.beams, rodPath(k));
     d.placement.position = r.placement.positionMm * kMetresPerMm;
     d.placement.direction = r.placement.direction;
     d.placement.normal = r.placement.normal;
-    d.material = compileMaterial(r.material);
-    d.section = compileSection(r.section, r.material.poissonRatio);
+    d.material = materialOf(rod);
+    d.section = sectionOf(rod);
     for (const BoundarySpec& b : r.boundary)
       d.constraints.push_back({b.node.resolve(r.beams), b.clamped ? unsigned(kAllDofs) : unsigned(kTranslation),
                                b.velocityMmS * kMetresPerMm, b.angularVelocityDegS * kRadPerDeg});

@@ -12,6 +12,7 @@
 #include "physics/deployment.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
+#include "physics/rod_spec.h"
 
 namespace coilsim::io {
 
@@ -19,8 +20,10 @@ inline constexpr const char* kSceneFormat = "coilsim-scene/1";
 
 enum class SolveMode { Dynamic, Static };
 
+// The file's rest shape (mm, deg); compiled into a RestShapeDef of the same type.
 struct RestShapeSpec {
-  enum class Type { Straight, Helix, Polyline, Birdcage } type = Type::Straight;
+  using Type = RestShapeDef::Type;
+  Type type = Type::Straight;
   // helix
   double loopDiameterMm = 0, pitchMm = 0;
   bool rightHanded = true;

@@ -177,4 +177,14 @@ RestCurve placed(const RestCurve& curve, const Placement& placement) {
   return out;
 }
 
+RestCurve makeRest(const RestShapeDef& rest, double length, int beams) {
+  switch (rest.type) {
+    case RestShapeDef::Type::Straight: return makeStraight(length, beams);
+    case RestShapeDef::Type::Helix: return makeHelix(length, beams, rest.loopDiameter, rest.pitch, rest.rightHanded);
+    case RestShapeDef::Type::Polyline: return makePolyline(rest.points, length, beams, rest.frames, rest.twistPerLength);
+    case RestShapeDef::Type::Birdcage: return makeBirdcage(length, beams, rest.sphereDiameter, rest.planeTurnPerLoop);
+  }
+  throw std::invalid_argument("unknown rest shape type");
+}
+
 }  // namespace coilsim

@@ -38,6 +38,24 @@ RestCurve makePolyline(const std::vector<Vec3>& points, double length, int beams
 // so that successive loops cage the sphere as framing coils do.
 RestCurve makeBirdcage(double length, int beams, double sphereDiameter, double planeTurnPerLoopRad);
 
+// A rest shape as files and fits describe it, before it is sampled: the
+// kind and its few numbers (SI). Fits change the numbers (loop diameter,
+// pitch) and sample again, so the description is kept, not the samples.
+struct RestShapeDef {
+  enum class Type { Straight, Helix, Polyline, Birdcage } type = Type::Straight;
+  double loopDiameter = 0, pitch = 0;  // m (helix)
+  bool rightHanded = true;             // (helix)
+  std::vector<Vec3> points;            // m (polyline), from the rod's first node on (a coil's proximal end)
+  FrameRule frames = FrameRule::Frenet;  // (polyline)
+  double twistPerLength = 0;           // rad/m (polyline)
+  double sphereDiameter = 0;           // m (birdcage)
+  double planeTurnPerLoop = 0;         // rad (birdcage)
+};
+
+// Samples `rest` on a rod of `length` with `beams` beams, canonical (as the
+// makers above). Throws std::invalid_argument as they do.
+RestCurve makeRest(const RestShapeDef& rest, double length, int beams);
+
 // Rigid placement of a canonical curve: first node at `position`, tangent
 // along `direction`, d1 along `normal` (made orthogonal to direction).
 struct Placement {

@@ -9,8 +9,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "io/units.h"
+#include "physics/rod_quantities.h"
 #include "ui/panel.h"
 
 namespace coilsim::ui {
@@ -29,14 +31,18 @@ DeviceCommand make(DeviceCommand::Kind kind, double rate, double amount = 0) {
 void readOuts(const Session& session, PanelContext& ctx) {
   const Deployment& dep = *session.deployment();
   const DeviceState& ds = session.deploymentState();
+  // Lengths in the rod quantities' declared unit (physics/rod_quantities.h), as scenes give them.
+  const ParamSpec& length = rodq::kLength.spec;
+  const std::string unit(length.unit);
   char overlay[64];
-  std::snprintf(overlay, sizeof overlay, "%.1f of %.1f mm out", units::mToMm(ds.deployed), units::mToMm(dep.coilLength));
+  std::snprintf(overlay, sizeof overlay, "%.1f of %.1f %s out", units::fromSI(length, ds.deployed),
+                units::fromSI(length, dep.coilLength), unit.c_str());
   ImGui::ProgressBar(float(dep.coilLength > 0 ? ds.deployed / dep.coilLength : 0.0), ImVec2(-1.0f, 0.0f), overlay);
   if (ctx.layout) ctx.layout->markLastItem("deployed");
   ImGui::Text("twist %+.0f\xc2\xb0", units::radToDeg(ds.twist));
   if (ds.tipOffset != 0) {
     ImGui::SameLine();
-    ImGui::Text("  catheter back %.1f mm", units::mToMm(ds.tipOffset));
+    ImGui::Text("  catheter back %.1f %s", units::fromSI(length, ds.tipOffset), unit.c_str());
   }
   if (ds.detached) {
     ImGui::SameLine();

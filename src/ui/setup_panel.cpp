@@ -2,7 +2,9 @@
 #include <imgui.h>
 
 #include <exception>
+#include <string>
 
+#include "physics/rod_quantities.h"
 #include "ui/panel.h"
 #include "ui/setup.h"
 
@@ -37,6 +39,17 @@ void note(const std::string& text) {
   ImGui::PopTextWrapPos();
 }
 
+// The rod quantities a coil's label gives, as their declarations
+// (physics/rod_quantities.h) name, measure and explain them.
+std::string coilQuantities() {
+  std::string out;
+  for (const rodq::Quantity* q : {&rodq::kLoopDiameter, &rodq::kLength}) {
+    if (!out.empty()) out += "\n";
+    out += std::string(q->spec.name) + " (" + std::string(q->spec.unit) + "): " + std::string(q->spec.description);
+  }
+  return out;
+}
+
 }  // namespace
 
 bool applySetup(SetupChoices& choices, int coil, int catheter, Session& session, PanelContext& panel) {
@@ -60,6 +73,7 @@ bool applySetup(SetupChoices& choices, int coil, int catheter, Session& session,
 
 void drawSetupSection(const SetupChoices& choices, PanelContext& ctx) {
   ImGui::TextDisabled("coil (shape, loop, length, stiffness)");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", coilQuantities().c_str());
   const int coil = combo("##coil", choices.coils, choices.coil, "the scene's coil");
   note(choices.coilNote);
   ImGui::TextDisabled("catheter tip");

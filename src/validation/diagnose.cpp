@@ -194,7 +194,7 @@ Diagnosis diagnose(StageSimulator& sim, const Comparison& cmp, const ModelParams
   };
   std::vector<std::string> baseFit = o.fit;
   if (std::none_of(baseFit.begin(), baseFit.end(), isYoungModulus))
-    baseFit.insert(baseFit.begin(), "young_modulus");
+    baseFit.insert(baseFit.begin(), youngModulusFit());
   say("baseline: fitting " + std::to_string(baseFit.size()) + " parameter(s)");
   FitOptions fo;
   fo.params = baseFit;

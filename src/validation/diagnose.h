@@ -1,6 +1,6 @@
 #pragma once
 // Which physical effect is missing? The baseline (the paper's model with
-// young_modulus and the requested parameters fitted) leaves a residual r0.
+// young_modulus_gpa and the requested parameters fitted) leaves a residual r0.
 // Each candidate effect, tested alone:
 //  1. linearised screening: its parameters' sensitivities J_c (secant from
 //     "off" to a typical value), stacked with the baseline Jacobian J_0,
@@ -60,7 +60,7 @@ struct CandidateResult {
   double explainedFraction = 0;  // after the full refit (screening only: the prediction)
   bool refitted = false;
   bool significant = false;
-  std::string note;              // e.g. "indistinguishable from young_modulus"
+  std::string note;              // e.g. "indistinguishable from young_modulus_gpa"
   FitResult fit;                 // when refitted: regularised (priors in force)
   FitResult freeFit;             // for a selected effect: the same fit without priors
   std::vector<double> stageErrorAfter;  // (stages) in file order
@@ -95,7 +95,7 @@ struct Diagnosis {
 };
 
 struct DiagnoseOptions {
-  std::vector<std::string> fit = {"young_modulus"};  // baseline parameters (young_modulus always)
+  std::vector<std::string> fit = {youngModulusFit()};  // baseline parameters (Young's modulus always)
   std::vector<Candidate> candidates;                 // empty: defaultCandidates
   int refitTop = 3;
   int maxEffects = 3;        // forward selection stops after this many effects

@@ -47,7 +47,7 @@ JointDiagnosis diagnoseJoint(const std::vector<JointFile>& files, const std::vec
     d.message = "a joint fit needs two files or more";
     return d;
   }
-  d.fit = fitIn.empty() ? std::vector<std::string>{"young_modulus"} : fitIn;
+  d.fit = fitIn.empty() ? std::vector<std::string>{youngModulusFit()} : fitIn;
   std::vector<ModelParams> starts;
   for (const JointFile& f : files) starts.push_back(f.start);
   FitOptions fo;

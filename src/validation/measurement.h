@@ -8,26 +8,9 @@
 
 #include "physics/math.h"
 #include "physics/rest_shape.h"
+#include "physics/rod_spec.h"
 
 namespace coilsim::validation {
-
-struct RestShapeDef {
-  enum class Type { Straight, Helix, Polyline } type = Type::Straight;
-  double loopDiameter = 0, pitch = 0;  // m (helix)
-  bool rightHanded = true;
-  std::vector<Vec3> points;            // m (polyline), from the distal tip (u = 0) to the proximal end (u = L)
-  double twistPerLength = 0;           // rad/m (polyline)
-};
-
-struct CoilDef {
-  double length = 0;         // L, m
-  double wireRadius = 0;     // m
-  double massPerLength = 0;  // kg/m (from density * A or mass / L)
-  RestShapeDef rest;
-  double youngModulus = 0;   // Pa, nominal; 0 when the file gives none
-  double poissonRatio = 0.3; // nominal (the file's, or 0.3 when it gives none)
-  bool hasYoungModulus = false, hasPoissonRatio = false;
-};
 
 struct PushSample {
   double time = 0;      // s
@@ -49,7 +32,15 @@ struct Stage {
 struct Measurement {
   std::string file;  // where it was read from (labels messages), may be empty
   std::string name, description;
-  CoilDef coil;
+  // The bench coil, a solid circular wire (physics/rod_spec.h): a polyline
+  // rest shape from its proximal end, as a deployment's coil; Young's
+  // modulus 0 when the file gives none, Poisson's ratio 0.3 then.
+  RodSpec coil = [] {
+    RodSpec c;
+    c.poissonRatio = 0.3;
+    return c;
+  }();
+  bool givesPoissonRatio = false;  // the file gave coil.poissonRatio (the writer writes it back only then)
   Vec3 gravity = Vec3(0, 0, -9.81);  // m/s^2
   double mediumDensity = 1.2;        // kg/m^3 (air unless the file says otherwise)
   double mediumViscosity = 1.8e-5;   // Pa s

@@ -26,7 +26,7 @@ struct RodFit {
 const RodFit kRodFits[] = {
     {&rodq::kYoungModulus, "young_modulus", &ModelParams::youngModulus, false,
      [](const ModelParams& p, const Measurement& m, FitParam& f) {
-       const double e0 = m.coil.hasYoungModulus ? m.coil.youngModulus : p.youngModulus;
+       const double e0 = m.coil.youngModulus > 0 ? m.coil.youngModulus : p.youngModulus;
        f.prior = {e0 > 0, e0, 0.5 * e0, 2.0 * e0};
      }},
     // Metals: 0.28-0.42 (platinum 0.39, nitinol 0.33).

@@ -53,10 +53,11 @@ void setParam(ModelParams& p, const std::string& name, double si);
 // The scene key a fit name stands for (young_modulus -> young_modulus_gpa);
 // any other name unchanged. Two names fit the same parameter when these agree.
 std::string canonicalFitName(const std::string& name);
-// True for either name of the coil's Young's modulus, which diagnosis always fits.
-inline bool isYoungModulus(const std::string& name) {
-  return canonicalFitName(name) == canonicalFitName("young_modulus");
-}
+// The fit name of the coil's Young's modulus, which diagnosis and joint fits
+// always fit: its declared scene key.
+inline std::string youngModulusFit() { return std::string(rodq::kYoungModulus.spec.name); }
+// True for either name of the coil's Young's modulus (the old one too).
+inline bool isYoungModulus(const std::string& name) { return canonicalFitName(name) == youngModulusFit(); }
 // One line for a user who typed an old fit name, else empty.
 std::string oldFitNameNote(const std::string& name);
 // The rod quantities identification can fit, in help order.

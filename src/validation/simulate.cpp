@@ -28,13 +28,13 @@ Built build(const Measurement& m, const ModelParams& p, int beams, double timeSt
     def.effects.push_back(e);
     compliant = compliant || (e.enabled && releasesClamp(e));
   }
+  const RodSpec coil = coilWith(m.coil, p);
   DeploymentDef d;
-  d.coilLength = m.coil.length;
+  d.coilLength = coil.length;
   d.coilBeams = beams;
-  d.coilRest = coilRestCurve(m.coil, p, beams);
-  const double area = M_PI * m.coil.wireRadius * m.coil.wireRadius;
-  d.coilMaterial = {p.youngModulus, shearModulusOf(p.youngModulus, p.poissonRatio), m.coil.massPerLength / area};
-  d.coilSection = circularSection(m.coil.wireRadius, p.poissonRatio);
+  d.coilRest = makeRest(coil.rest, coil.length, beams);
+  d.coilMaterial = materialOf(coil);
+  d.coilSection = sectionOf(coil);
   d.tip = m.tip;
   d.maxPushSpeed = 1e9, d.maxTwistRate = 1e9;  // the file's history is what happened
   // A compliant catheter: the tip node hangs on the catheter_compliance spring instead of the rigid clamp.
@@ -108,7 +108,7 @@ StageSim collect(const Built& b, const State& s) {
 
 ModelParams ModelParams::nominal(const Measurement& m) {
   ModelParams p;
-  p.youngModulus = m.coil.hasYoungModulus ? m.coil.youngModulus : 10e9;
+  p.youngModulus = m.coil.youngModulus > 0 ? m.coil.youngModulus : 10e9;
   p.poissonRatio = m.coil.poissonRatio;
   p.loopDiameter = m.coil.rest.loopDiameter;
   p.pitch = m.coil.rest.pitch;
@@ -126,17 +126,12 @@ const EffectUse* ModelParams::effect(std::string_view name) const {
   return nullptr;
 }
 
-RestCurve coilRestCurve(const CoilDef& coil, const ModelParams& p, int beams) {
-  switch (coil.rest.type) {
-    case RestShapeDef::Type::Straight: return makeStraight(coil.length, beams);
-    case RestShapeDef::Type::Helix: return makeHelix(coil.length, beams, p.loopDiameter, p.pitch, coil.rest.rightHanded);
-    case RestShapeDef::Type::Polyline: {
-      // The file runs from the distal tip; the deployment from the proximal end.
-      std::vector<Vec3> pts(coil.rest.points.rbegin(), coil.rest.points.rend());
-      return makePolyline(pts, coil.length, beams, FrameRule::Frenet, coil.rest.twistPerLength);
-    }
-  }
-  return makeStraight(coil.length, beams);
+RodSpec coilWith(const RodSpec& coil, const ModelParams& p) {
+  RodSpec out = coil;
+  out.youngModulus = p.youngModulus;
+  out.poissonRatio = p.poissonRatio;
+  if (out.rest.type == RestShapeDef::Type::Helix) out.rest.loopDiameter = p.loopDiameter, out.rest.pitch = p.pitch;
+  return out;
 }
 
 StageSimulator::StageSimulator(const Measurement& m, const SimOptions& o) : m_(m), options_(o) {

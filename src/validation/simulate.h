@@ -70,8 +70,8 @@ class StageSimulator {
   std::vector<Cache> cache_;  // (stages) last equilibrium, for warm starts
 };
 
-// The rest centre line of the coil, canonical, from the proximal end (u = L)
-// to the distal tip (u = 0), as the deployment expects it.
-RestCurve coilRestCurve(const CoilDef& coil, const ModelParams& p, int beams);
+// The measurement's coil with the parameters `p` (Young's modulus, Poisson's
+// ratio and, for a helix, loop diameter and pitch) in place of the file's.
+RodSpec coilWith(const RodSpec& coil, const ModelParams& p);
 
 }  // namespace coilsim::validation

@@ -215,21 +215,4 @@ TEST(Cli, UnconvergedStaticExits1) {
   EXPECT_EQ(readJson(dir / "r.json")["status"], "not_converged");
 }
 
-#ifdef COILSIM_HAVE_UI
-TEST(Cli, ScreenshotOffScreenWritesAPng) {
-  const fs::path dir = scratch("screenshot");
-  const Exec r = coilsim({scene("cantilever-static.json"), "--headless", "--screenshot", (dir / "s.png").string(),
-                         "--size", "320x240"}, dir);
-  EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_GT(fs::file_size(dir / "s.png"), 100u);
-}
-#else
-TEST(Cli, ScreenshotWithoutUiSaysSoAndExits2) {
-  const fs::path dir = scratch("screenshot");
-  const Exec r = coilsim({scene("cantilever-static.json"), "--headless", "--screenshot", (dir / "s.png").string()}, dir);
-  EXPECT_EQ(r.code, 2);
-  EXPECT_CONTAINS(r.err, "without the ui layer");
-}
-#endif
-
 }  // namespace

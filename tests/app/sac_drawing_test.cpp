@@ -1,8 +1,8 @@
 // The neck disc and the legend of sac pictures (app/sac_drawing.h), against
 // the geometry of a sphere cut by a plane: the cut is the circle of radius
 // sqrt(R^2 - h^2) at distance h from the centre, and the cap beyond it holds
-// pi c^2 (3R - c) / 3 of volume (c = R - h).
-#ifdef COILSIM_HAVE_UI
+// pi c^2 (3R - c) / 3 of volume (c = R - h). (A test of the graphics file
+// set: tests/app/CMakeLists.txt compiles it only with the ui layer.)
 #include "app/sac_drawing.h"
 
 #include <gtest/gtest.h>
@@ -61,4 +61,3 @@ TEST(SacDrawing, MoreVolumeBeyondTheNeckThanHalfTheSacCountsAsAVessel) {
 
 }  // namespace
 }  // namespace coilsim::app
-#endif

@@ -47,7 +47,7 @@ TEST(DiagnoseCommand, ControlFileHasNoSignificantEffect) {
   const Exec r = coilsim({"diagnose", kControl, "--out", (dir / "out").string(), "--no-plots"}, dir);
   ASSERT_EQ(r.code, 0) << r.err;
   const nlohmann::json j = readJson(dir / "out" / "diagnosis.json");
-  EXPECT_TRUE(j["baseline"]["fitted"].contains("young_modulus"));
+  EXPECT_TRUE(j["baseline"]["fitted"].contains("young_modulus_gpa"));  // the scene key
   ASSERT_EQ(j["candidates"].size(), 5u);
   double previous = 2;
   for (const auto& c : j["candidates"]) {
@@ -83,7 +83,7 @@ TEST(DiagnoseCommand, TwoFilesOfOneCoilAreFittedJointly) {
   ASSERT_FALSE(joint["effects"].empty());
   EXPECT_EQ(joint["effects"][0]["effect"], "buoyancy");
   EXPECT_TRUE(joint["effects"][0]["removes_spread"].get<bool>());
-  EXPECT_CONTAINS(r.out, "joint: young_modulus must differ");
+  EXPECT_CONTAINS(r.out, "joint: young_modulus_gpa must differ");
 }
 
 TEST(ValidateCommand, BadFileNamesTheFieldAndExits2) {

@@ -2,7 +2,8 @@
 // (its sidecar's neck plane, moved as the scene moves the mesh) for the
 // live read-outs, and the panel's coil and catheter choice, which loads
 // every catalogue coil and every tip shape into the default scene.
-#ifdef COILSIM_HAVE_UI
+// (A test of the graphics file set: tests/app/CMakeLists.txt compiles it
+// only with the ui layer.)
 #include "app/window_setup.h"
 
 #include <gtest/gtest.h>
@@ -90,4 +91,3 @@ TEST(WindowSetup, EveryCatalogueCoilAndTipShapeLoadsIntoTheDefaultScene) {
 
 }  // namespace
 }  // namespace coilsim::app
-#endif

@@ -16,7 +16,6 @@ namespace coilsim::io {
 namespace {
 
 using validation::Measurement;
-using validation::RestShapeDef;
 
 // The format's own example, with a second, dynamic stage.
 const std::string kGood = R"({
@@ -60,7 +59,8 @@ TEST(Measurement, ReadsEveryFieldInSI) {
   EXPECT_DOUBLE_EQ(m.coil.length, 0.150);
   EXPECT_DOUBLE_EQ(m.coil.wireRadius, 0.3556e-3);
   // mass per length = density * pi r^2 = 21450 kg/m3 * pi * (0.3556e-3 m)^2
-  EXPECT_NEAR(m.coil.massPerLength, 21450 * M_PI * 0.3556e-3 * 0.3556e-3, 1e-15);
+  EXPECT_DOUBLE_EQ(m.coil.density, 21450);
+  EXPECT_NEAR(massPerLength(m.coil), 21450 * M_PI * 0.3556e-3 * 0.3556e-3, 1e-15);
   EXPECT_EQ(m.coil.rest.type, RestShapeDef::Type::Helix);
   EXPECT_DOUBLE_EQ(m.coil.rest.loopDiameter, 7e-3);
   EXPECT_DOUBLE_EQ(m.coil.rest.pitch, 0.96e-3);
@@ -96,7 +96,7 @@ TEST(Measurement, AirWhenNoMediumAndMassInsteadOfDensity) {
   const Measurement m = parseMeasurement(s, "m.json");
   EXPECT_DOUBLE_EQ(m.mediumDensity, 1.2);  // 0.0012 g/cm3
   EXPECT_DOUBLE_EQ(m.mediumViscosity, 1.8e-5);
-  EXPECT_DOUBLE_EQ(m.coil.massPerLength, 3e-3 / 0.150);
+  EXPECT_DOUBLE_EQ(massPerLength(m.coil), 3e-3 / 0.150);
 }
 
 TEST(Measurement, PolylineRestShapeFromTheDistalTip) {
@@ -105,8 +105,11 @@ TEST(Measurement, PolylineRestShapeFromTheDistalTip) {
       R"({"type": "polyline", "points_mm": [[0,0,0],[100,0,0],[100,50,0]], "twist_deg_per_mm": 2})");
   const Measurement m = parseMeasurement(s, "m.json");
   ASSERT_EQ(m.coil.rest.type, RestShapeDef::Type::Polyline);
+  // Held from the proximal end, as a deployment samples a coil's rest shape.
   ASSERT_EQ(m.coil.rest.points.size(), 3u);
+  EXPECT_TRUE(m.coil.rest.points[0].isApprox(Vec3(0.1, 0.05, 0)));
   EXPECT_TRUE(m.coil.rest.points[1].isApprox(Vec3(0.1, 0, 0)));
+  EXPECT_TRUE(m.coil.rest.points[2].isZero());
   EXPECT_NEAR(m.coil.rest.twistPerLength, 2 * M_PI / 180 * 1000, 1e-9);
   // 149 mm of polyline for a 150 mm coil is within 1 %; 140 mm is not.
   EXPECT_NO_THROW(parseMeasurement(with("[100,50,0]", "[100,49,0]", s), "m.json"));
@@ -114,10 +117,22 @@ TEST(Measurement, PolylineRestShapeFromTheDistalTip) {
                   "/coil/rest_shape/points_mm");
 }
 
+TEST(Measurement, PolylineRoundTripsInTheFileOrder) {
+  const std::string s = with(
+      R"({"type": "helix", "loop_diameter_mm": 7.0, "pitch_mm": 0.96, "handedness": "left"})",
+      R"({"type": "polyline", "points_mm": [[0,0,0],[100,0,0],[100,50,0]], "twist_deg_per_mm": 2})");
+  const std::string written = formatMeasurement(parseMeasurement(s, "m.json"));
+  // The file's order (from the distal tip) is written back.
+  const auto points = nlohmann::json::parse(written)["coil"]["rest_shape"]["points_mm"];
+  ASSERT_EQ(points.size(), 3u);
+  EXPECT_DOUBLE_EQ(points[0][0].get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(points[2][1].get<double>(), 50.0);
+}
+
 TEST(Measurement, RoundTripsThroughTheWriter) {
   const Measurement a = parseMeasurement(kGood, "m.json");
   const Measurement b = parseMeasurement(formatMeasurement(a), "again.json");
-  EXPECT_NEAR(b.coil.massPerLength, a.coil.massPerLength, 1e-12);
+  EXPECT_NEAR(massPerLength(b.coil), massPerLength(a.coil), 1e-12);
   EXPECT_EQ(b.coil.rest.rightHanded, a.coil.rest.rightHanded);
   ASSERT_EQ(b.stages.size(), a.stages.size());
   for (size_t i = 0; i < a.stages.size(); ++i) {

@@ -21,7 +21,7 @@ TEST(ControlFile, BaseModelWithEFittedIsWithinFivePercent) {
   StageSimulator sim(m);
   Comparison cmp(m);
   FitOptions fo;
-  fo.params = {"young_modulus"};
+  fo.params = {"young_modulus_gpa"};
   const FitResult f = identify(sim, cmp, ModelParams::nominal(m), fo);
   ASSERT_TRUE(f.ok) << f.message;
   const auto stages = cmp.compare(sim.run(f.params, false));

@@ -41,12 +41,11 @@ Measurement skeleton() {
   m.name = "side flow";
   m.coil.length = 0.080;
   m.coil.wireRadius = kWire;
-  m.coil.massPerLength = 21450 * M_PI * kWire * kWire;  // weight 6.6 mN/m: the flow is 23 % of it
+  m.coil.density = 21450;  // weight 6.6 mN/m: the flow is 23 % of it
   m.coil.rest.type = RestShapeDef::Type::Helix;
   m.coil.rest.loopDiameter = 8e-3;
   m.coil.rest.pitch = 5e-3;
   m.coil.youngModulus = 1.2 * kE;
-  m.coil.hasYoungModulus = true;
   m.coil.poissonRatio = 0.39;
   m.tip.direction = Vec3::UnitX();
   m.tip.normal = Vec3::UnitZ();
@@ -84,7 +83,7 @@ TEST(CustomEffect, RegisteredInTheTestMakesTheErrorFall) {
   StageSimulator csim(control, coarse);
   Comparison ccmp(control);
   FitOptions fe;
-  fe.params = {"young_modulus"};
+  fe.params = {"young_modulus_gpa"};
   const FitResult cf = identify(csim, ccmp, ModelParams::nominal(control), fe);
   ASSERT_TRUE(cf.ok) << cf.message;
   const std::vector<double> controlErr = stageErrors(csim, ccmp, cf.params);
@@ -99,7 +98,7 @@ TEST(CustomEffect, RegisteredInTheTestMakesTheErrorFall) {
   start.effects.push_back(EffectRegistry::global().use("test_side_flow"));
   start.effects.back().set("force_mn_per_m", 0.0);
   FitOptions fw;
-  fw.params = {"young_modulus", "test_side_flow.force_mn_per_m"};
+  fw.params = {"young_modulus_gpa", "test_side_flow.force_mn_per_m"};
   const FitResult with = identify(sim, cmp, start, fw);
   ASSERT_TRUE(with.ok) << with.message;
   const std::vector<double> after = stageErrors(sim, cmp, with.params);

@@ -39,14 +39,13 @@ Measurement skeleton(double pitch = 5e-3) {
   m.name = "synthetic";
   m.coil.length = 0.080;
   m.coil.wireRadius = kWire;
-  m.coil.massPerLength = 21450 * M_PI * kWire * kWire;
+  m.coil.density = 21450;
   m.coil.rest.type = RestShapeDef::Type::Helix;
   m.coil.rest.loopDiameter = 8e-3;
   m.coil.rest.pitch = pitch;
   m.coil.youngModulus = kNominalE;
-  m.coil.hasYoungModulus = true;
   m.coil.poissonRatio = 0.39;
-  m.coil.hasPoissonRatio = true;
+  m.givesPoissonRatio = true;
   m.tip.direction = Vec3::UnitX();
   m.tip.normal = Vec3::UnitZ();
   for (double l : {0.025, 0.050, 0.075}) {
@@ -112,7 +111,7 @@ std::vector<double> controlErrors(const Measurement& sk) {
   StageSimulator sim(m, coarse());
   Comparison cmp(m);
   FitOptions fo;
-  fo.params = {"young_modulus"};
+  fo.params = {"young_modulus_gpa"};
   const FitResult f = identify(sim, cmp, ModelParams::nominal(m), fo);
   EXPECT_TRUE(f.ok) << f.message;
   std::vector<double> e;
@@ -236,7 +235,7 @@ TEST(HiddenEffect, BuoyancyIsAbsorbedByE) {
   Measurement sk = skeleton();
   const double rhoC = 6450, rhoF = 1000;  // a nitinol coil in water: buoyancy 15 % of the weight
   sk.mediumDensity = rhoF;
-  sk.coil.massPerLength = rhoC * M_PI * kWire * kWire;
+  sk.coil.density = rhoC;
   ModelParams truth = truthOf(sk);
   truth.effects.push_back(EffectRegistry::global().use("buoyancy"));
   truth.effects.back().set("medium_density_g_cm3", rhoF);
@@ -255,7 +254,7 @@ TEST(HiddenEffect, BuoyancyIsAbsorbedByE) {
   StageSimulator csim(c, coarse());
   Comparison ccmp(c);
   FitOptions fe;
-  fe.params = {"young_modulus"};
+  fe.params = {"young_modulus_gpa"};
   const FitResult cf = identify(csim, ccmp, ModelParams::nominal(c), fe);
   ASSERT_TRUE(cf.ok) << cf.message;
   const FittedValue &eb = d.baseline.fitted[0], &ec = cf.fitted[0];
@@ -285,7 +284,7 @@ TEST(HiddenEffect, Buoyancy) {
   Measurement sk = skeleton();
   const double rhoC = 6450, rhoF = 1400, wire = 0.06e-3;
   sk.coil.wireRadius = wire;
-  sk.coil.massPerLength = rhoC * M_PI * wire * wire;
+  sk.coil.density = rhoC;
   addTwistStage(sk, 0.05, M_PI / 2, 0.02, 0.05);
   checkHidden(sk, {"buoyancy", [&](EffectUse& e) { e.set("medium_density_g_cm3", rhoF); },
                    {{"buoyancy.medium_density_g_cm3", rhoF}}});

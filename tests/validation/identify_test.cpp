@@ -14,9 +14,8 @@ Measurement straightCantilever() {
   m.name = "straight";
   m.coil.length = 0.03;
   m.coil.wireRadius = 0.1e-3;
-  m.coil.massPerLength = 21450 * M_PI * 1e-8;
+  m.coil.density = 21450;
   m.coil.youngModulus = 7e9;
-  m.coil.hasYoungModulus = true;
   m.tip.direction = Vec3::UnitX();
   m.tip.normal = Vec3::UnitZ();
   Stage s;
@@ -41,7 +40,7 @@ TEST(Identify, StopRequestEndsTheFitAtOnce) {
   StageSimulator sim(m, {2e-3, 2e-3, 1e-3});
   Comparison cmp(m);
   FitOptions o;
-  o.params = {"young_modulus"};
+  o.params = {"young_modulus_gpa"};
   int asked = 0;
   o.stop = [&] { return ++asked > 3; };
   const FitResult r = identify(sim, cmp, ModelParams::nominal(m), o);
@@ -68,7 +67,7 @@ TEST(Identify, AParameterTheDataDoNotSeeIsNotIdentifiable) {
   ModelParams start = ModelParams::nominal(m);
   start.effects.push_back(effectFromFile("drag", m));
   FitOptions o;
-  o.params = {"young_modulus", "drag.viscosity_pa_s"};
+  o.params = {"young_modulus_gpa", "drag.viscosity_pa_s"};
   const FitResult r = identify(sim, cmp, start, o);
   ASSERT_TRUE(r.ok) << r.message;
   ASSERT_EQ(r.fitted.size(), 2u);

@@ -19,7 +19,6 @@ Measurement helixCoil() {
   m.coil.rest.loopDiameter = 7e-3;
   m.coil.rest.pitch = 1e-3;
   m.coil.youngModulus = 7.5e9;
-  m.coil.hasYoungModulus = true;
   m.coil.poissonRatio = 0.39;
   return m;
 }

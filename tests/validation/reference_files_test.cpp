@@ -155,7 +155,7 @@ void checkHidden(const std::string& name, const std::vector<std::string>& expect
   for (size_t k = 0; k < truth.size(); ++k)
     EXPECT_LE(d.finalStages[k].metrics.stageError, 1.5 * truth[k]) << name << " stage " << k;
   const FittedValue& E = d.selected.back().result.fit.fitted[0];
-  ASSERT_EQ(E.name, "young_modulus");
+  ASSERT_EQ(E.name, "young_modulus_gpa");  // the scene key, diagnosis's default
   const double trueE = scenario(name).trueYoungGpa * 1e9;
   EXPECT_LE(std::abs(E.value - trueE), std::max(0.05 * trueE, eSigmas * E.sigma))
       << name << ": E " << E.value / 1e9 << " +- " << E.sigma / 1e9 << " GPa, true " << trueE / 1e9;
@@ -228,7 +228,7 @@ TEST(ReferenceFiles, BuoyancyWaterAndAir) {
   ModelParams a = ModelParams::nominal(air);
   const JointDiagnosis j = diagnoseJoint({{water->sim.get(), water->cmp.get(), ModelParams::nominal(water->m)},
                                           {&airSim, &airCmp, a}},
-                                         {"young_modulus"}, {});
+                                         {"young_modulus_gpa"}, {});
   ASSERT_TRUE(j.ok) << j.message;
   std::printf("joint: %s\n", j.verdict.c_str());
   ASSERT_FALSE(j.spread.empty());
