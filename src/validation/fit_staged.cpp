@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "validation/fit_jitter.h"
+#include "validation/params.h"
 
 namespace coilsim::validation {
 
@@ -18,7 +19,7 @@ StagedFit identifySmoothFirst(StageSimulator& sim, const Comparison& cmp, const 
   for (const Stage& s : m.stages)
     if (!s.dynamic()) smooth.stages.push_back(s);
   if (smooth.stages.size() < m.stages.size() && !smooth.stages.empty()) {
-    out.jitter = stageJitter(sim, cmp, start, "young_modulus");
+    out.jitter = stageJitter(sim, cmp, start, youngModulusFit());
     for (size_t k = 0; k < m.stages.size(); ++k) out.staged = out.staged || out.jitter[k] > kJitterShare * cmp.stageSigma(k);
   }
   if (!out.staged) {

@@ -13,6 +13,7 @@
 #include "validation/compare.h"
 #include "validation/fit_jitter.h"
 #include "validation/generate.h"
+#include "validation/params.h"
 
 namespace coilsim::validation {
 namespace {
@@ -22,14 +23,12 @@ Measurement openHelix() {
   m.name = "open helix";
   m.coil.length = 0.060;
   m.coil.wireRadius = 0.1e-3;
-  m.coil.massPerLength = 21450 * M_PI * 1e-8;
+  m.coil.density = 21450;  // platinum-tungsten, kg/m^3
   m.coil.rest.type = RestShapeDef::Type::Helix;
   m.coil.rest.loopDiameter = 8e-3;
   m.coil.rest.pitch = 5e-3;
   m.coil.youngModulus = 6e9;
-  m.coil.hasYoungModulus = true;
   m.coil.poissonRatio = 0.39;
-  m.coil.hasPoissonRatio = true;
   m.tip.direction = Vec3::UnitX();
   m.tip.normal = Vec3::UnitZ();
   for (double l : {0.030, 0.055}) {
@@ -50,7 +49,7 @@ TEST(FitJitter, SmoothStaticStagesStayWithinTheSecondOrderBound) {
   const Comparison cmp(m);
   const ModelParams p = ModelParams::nominal(m);
   JitterOptions o;
-  const std::vector<double> j = stageJitter(sim, cmp, p, "young_modulus", o);
+  const std::vector<double> j = stageJitter(sim, cmp, p, youngModulusFit(), o);
   // The largest node move when E doubles from the largest centre (the most compliant state is at the smallest).
   ModelParams soft = p, stiff = p;
   soft.youngModulus = p.youngModulus * o.centres.front();

@@ -32,14 +32,12 @@ Measurement landingLoops() {
   m.name = "landing loops";
   m.coil.length = 0.040;
   m.coil.wireRadius = kWire;
-  m.coil.massPerLength = 21450 * M_PI * kWire * kWire;
+  m.coil.density = 21450;  // platinum-tungsten, kg/m^3
   m.coil.rest.type = RestShapeDef::Type::Helix;
   m.coil.rest.loopDiameter = 8e-3;
   m.coil.rest.pitch = 2 * kWire;
   m.coil.youngModulus = 6.8e9;
-  m.coil.hasYoungModulus = true;
   m.coil.poissonRatio = 0.39;
-  m.coil.hasPoissonRatio = true;
   m.tip.direction = Vec3::UnitX();
   m.tip.normal = Vec3::UnitY();
   Stage st;
