@@ -210,7 +210,6 @@ DeploymentDef compileDeployment(const SceneSpec& s, const DeploymentSpec& d) {
   def.initialTwist = degToRad(d.initialTwistDeg);
   def.maxPushSpeed = mmPerSToMPerS(d.maxPushSpeedMmS);
   def.maxTwistRate = degPerSToRadPerS(d.maxTwistRateDegS);
-  def.maxPushForce = d.maxPushForceMn * kMaxPushForce.toSI;
   return def;
 }
 

@@ -120,7 +120,6 @@ struct DeploymentSpec {
   CatheterSpec catheter;
   double initialDeployedMm = 0, initialTwistDeg = 0;
   double maxPushSpeedMmS = 50, maxTwistRateDegS = 720;
-  double maxPushForceMn = kMaxPushForce.defaultValue;
 };
 
 // One effect switched on by the scene; values in the edge unit of each of the

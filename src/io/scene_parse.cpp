@@ -207,7 +207,7 @@ CatheterSpec readCatheter(const JsonNode& n) {
 
 DeploymentSpec readDeployment(const JsonNode& n) {
   n.allowKeys({"coil", "catheter", "initial_deployed_mm", "initial_twist_deg", "max_push_speed_mm_s",
-               "max_twist_rate_deg_s", kMaxPushForce.name});
+               "max_twist_rate_deg_s"});
   DeploymentSpec d;
   readCoil(n.child("coil"), d);
   d.catheter = readCatheter(n.child("catheter"));
@@ -217,9 +217,6 @@ DeploymentSpec readDeployment(const JsonNode& n) {
   // may be set generous, never off.
   if (auto v = n.optional("max_push_speed_mm_s")) d.maxPushSpeedMmS = v->number({0, 1000, true, false, "mm/s"});
   if (auto w = n.optional("max_twist_rate_deg_s")) d.maxTwistRateDegS = w->number({0, 36000, true, false, "deg/s"});
-  // The pusher's force limit (physics/device.h declares its key, unit and bounds).
-  if (auto f = n.optional(kMaxPushForce.name))
-    d.maxPushForceMn = f->number({kMaxPushForce.min, kMaxPushForce.max, true, false, kMaxPushForce.unit});
   return d;
 }
 

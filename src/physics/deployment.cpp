@@ -77,7 +77,12 @@ void rebuildChain(const Deployment& dep, const Model& model, RodState& chain, co
   else chain.nodes[0] = coilNodeProps(dep, atTip);  // held: its zero or small mass is fine
   if (outsideNodes == 0) return;
   const double delta = outside(dep, ds.deployed, k);
-  chain.beams[T] = partialBeamRest(dep, ds, ds.deployed);
+  // The partial beam: from the coil material at the tip (u = l) to node k.
+  Vec3 xa;
+  Quat fa;
+  dep.restPose((dep.coilLength - ds.deployed) / h, xa, fa);
+  chain.beams[T] = makeBeamRest(xa, fa, dep.restX[k], dep.restF[k], dep.material, dep.section);
+  chain.beams[T].nodeToElement = (twistAboutTangent(ds.twist) * chain.beams[T].nodeToElement).normalized();
   // Whole material beams j -> j+1 behind it, as the nominal (fully deployed) chain has them.
   if (allBeams)
     for (int e = 1; T + e + 1 < chain.activeNodes; ++e) chain.beams[T + e] = nominal.beams[T + k + e - 1];
@@ -89,17 +94,6 @@ void rebuildChain(const Deployment& dep, const Model& model, RodState& chain, co
 }
 
 }  // namespace
-
-BeamRest partialBeamRest(const Deployment& dep, const DeviceState& ds, double deployed) {
-  // From the coil material at the tip (u = l) to node k.
-  const int k = ds.firstOutside;
-  Vec3 xa;
-  Quat fa;
-  dep.restPose((dep.coilLength - deployed) / dep.spacing, xa, fa);
-  BeamRest b = makeBeamRest(xa, fa, dep.restX[k], dep.restF[k], dep.material, dep.section);
-  b.nodeToElement = (twistAboutTangent(ds.twist) * b.nodeToElement).normalized();
-  return b;
-}
 
 Quat coilFrameAtTip(const Deployment& dep, const RodState& chain, double twist) {
   return (chain.q[dep.tipNode] * twistAboutTangent(twist)).normalized();
@@ -186,7 +180,6 @@ Deployment addDeployment(const DeploymentDef& d, ModelDef& def) {
     bad("initial deployed length must lie in [0, coil length]");
   if (!std::isfinite(d.initialTwist)) bad("initial twist is not finite");
   if (!(d.maxPushSpeed > 0) || !(d.maxTwistRate > 0)) bad("speed limits must be positive");
-  if (!(d.maxPushForce > 0)) bad("the push force limit must be positive (infinite: the insertion is prescribed)");
   const Vec3 dir = d.tip.direction, nrm = d.tip.normal;
   if (!dir.allFinite() || dir.norm() < 1e-12) bad("tip direction must be a non-zero vector");
   if (!nrm.allFinite() || nrm.cross(dir).norm() < 1e-9 * nrm.norm() * dir.norm())
@@ -203,7 +196,6 @@ Deployment addDeployment(const DeploymentDef& d, ModelDef& def) {
   dep.tip = d.tip;
   dep.maxPushSpeed = d.maxPushSpeed;
   dep.maxTwistRate = d.maxTwistRate;
-  dep.maxPushForce = d.maxPushForce;
   dep.initialDeployed = d.initialDeployed;
   dep.initialTwist = d.initialTwist;
   dep.retractDirection = dir.normalized();

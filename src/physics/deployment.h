@@ -52,11 +52,6 @@ void setDeployment(const Model& model, State& state, double deployed, double twi
 // of its steps is held back where loops could pass through each other.
 void slideDeployment(const Model& model, State& state, double deployed, double twist);
 
-// The rest constants of the partial beam at the tip (tip node to the first
-// outside node ds.firstOutside, at least one outside) for deployed length
-// `deployed` and twist ds.twist: what setDeployment gives it.
-BeamRest partialBeamRest(const Deployment& dep, const DeviceState& ds, double deployed);
-
 // The frame the coil has at the tip: the tip node's frame turned by the twist.
 Quat coilFrameAtTip(const Deployment& dep, const RodState& chain, double twist);
 

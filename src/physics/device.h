@@ -38,21 +38,10 @@
 #include "physics/catheter.h"
 #include "physics/element.h"
 #include "physics/math.h"
-#include "physics/param.h"
 #include "physics/rest_shape.h"
 #include "physics/section.h"
 
 namespace coilsim {
-
-// The largest axial force the pusher applies, declared once (the scene key
-// and `coilsim help` take it from here). A hand advancing a coil feels the
-// resistance and does not push harder than a few tenths of a newton; the
-// value is an assumption of that order (docs/contact.md, "The pusher's
-// force limit"), not a measured device constant.
-inline constexpr ParamSpec kMaxPushForce{"max_push_force_mn", "mN",
-                                         "largest axial force the pusher applies to the coil: a push that needs more "
-                                         "stalls (the insertion slows so that the force stays at this limit)",
-                                         100.0, 0.0, 10000.0, 1e-3};
 
 // What a user specifies for a deployment (SI, checked by compileModel).
 struct DeploymentDef {
@@ -70,9 +59,6 @@ struct DeploymentDef {
   double initialTwist = 0;              // rad
   double maxPushSpeed = 0.05;           // m/s: faster pushes are refused (a hand does not push 5 cm/s)
   double maxTwistRate = 4 * M_PI;       // rad/s
-  // N: above it the push stalls (physics/pusher.h); INFINITY prescribes the
-  // insertion whatever resists it (tests that drive a wall by displacement).
-  double maxPushForce = kMaxPushForce.defaultValue * kMaxPushForce.toSI;
   // false: the rigid tip does not hold the coil's tip node; an effect that
   // models a compliant catheter holds it instead (the constraint stays,
   // holding no DOF, so the chain still counts as held for the static solver).
@@ -90,7 +76,6 @@ struct Deployment {
   Section section;
   Placement tip;
   double maxPushSpeed = 0, maxTwistRate = 0;
-  double maxPushForce = 0;  // N, the pusher's force limit (physics/pusher.h)
   double initialDeployed = 0, initialTwist = 0;  // where makeState() puts the device, m and rad
   // The catheter part of the chain: nodes 0..tipNode (tipNode = 0: rigid tip).
   int tipNode = 0;
@@ -131,21 +116,6 @@ struct DeviceMotion {
   bool moving() const { return pushRate != 0 || twistRate != 0 || retractRate != 0; }
 };
 
-// The pusher during one step (physics/pusher.h): set by moveDevice when a
-// push is under way, solved in the chain's implicit step, ended by advance.
-struct PusherState {
-  bool armed = false;          // a push is under way this step: its force limit acts in the step
-  double rate = 0;             // m/s, the push's commanded speed
-  double leftBefore = 0;       // m, the push's DeviceMotion::pushLeft before this step (< 0: unlimited)
-  double deployedBefore = 0;   // m, l before this step's insertion
-  double commanded = 0;        // m, the insertion commanded this step (the chain is set for all of it)
-  double fraction = 1;         // of `commanded`, the insertion the step's solve allowed (1: not limited)
-  BeamRest restBefore;         // the partial beam at the tip as it was at deployedBefore
-  std::vector<Vec6> response;  // (nnode) velocity change per unit of withdrawn insertion (scratch)
-  double force = 0;            // N, the axial force the pusher applied at the end of the last step (0: not pushing)
-  bool stalled = false;        // the last step's insertion was held back by the limit
-};
-
 // What a run changes of the device.
 struct DeviceState {
   double deployed = 0;      // l, m
@@ -157,7 +127,6 @@ struct DeviceState {
   Vec3 tipStart = Vec3::Zero();    // where the catheter tip was at the start, m
   Vec3 exitStart = Vec3::UnitX();  // its exit direction then
   DeviceMotion motion;
-  PusherState pusher;
   std::vector<std::string> notes;  // limits reached, detach done or refused ("coil fully deployed"), for UI and logs
 };
 

@@ -3,7 +3,6 @@
 
 #include "physics/assembly.h"
 #include "physics/integrator.h"
-#include "physics/pusher.h"
 
 namespace coilsim {
 namespace {
@@ -42,9 +41,7 @@ void integratePoses(RodState& r, double h) {
   }
 }
 
-// `pusher`: the device's pusher when this rod is the chain it pushes and a push is under way.
-StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, double h, long& iterations,
-                   PusherState* pusher) {
+StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, double h, long& iterations) {
   const RodModel& rm = model.rods[rodIndex];
   RodWorkspace& w = r.work;
   const double a = model.damping.massCoeff, b = model.damping.stiffnessCoeff;
@@ -95,7 +92,6 @@ StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, d
     if (!w.solver.factorize(A, n))
       return {StepStatus::SolverFailure, "rod '" + rm.name + "': implicit matrix is not positive definite"};
     w.solver.solve(w.rhs);
-    if (pusher) limitPushInStep(*model.device, *pusher, r, h);
     for (int i = 0; i < n; ++i) {
       r.v[i] += w.rhs[i].head<3>();
       r.w[i] += w.rhs[i].tail<3>();
@@ -130,11 +126,8 @@ StepReport attempt(const Model& model, State& state, double h, bool detect, bool
     for (const EffectUse& u : model.effects)
       if (u.enabled) u.effect->beginStep(model, u.values, state, h);
   StepReport report;
-  PusherState* pusher = model.device && state.device.pusher.armed ? &state.device.pusher : nullptr;
   for (size_t k = 0; k < model.rods.size() && report.ok(); ++k)
-    if (state.rods[k].active)
-      report = stepRod(model, int(k), state.rods[k], state.time, h, iterations,
-                       pusher && int(k) == model.device->chainRod ? pusher : nullptr);
+    if (state.rods[k].active) report = stepRod(model, int(k), state.rods[k], state.time, h, iterations);
   if (report.ok()) {
     const std::string problem = checkHealth(model, state);
     if (!problem.empty()) report = {StepStatus::BlowUp, problem};
@@ -246,7 +239,6 @@ StepReport step(const Model& model, State& state) {
     }
   }
   if (report.ok()) state.time += model.timeStep;
-  finishPush(model, state, report.ok());
   recordWallPenetration(model, state);
   if (report.ok()) recordWallLoad(model, state);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

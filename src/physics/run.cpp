@@ -6,7 +6,6 @@
 #include "physics/contact/clearance.h"
 #include "physics/contact/detect.h"
 #include "physics/deployment.h"
-#include "physics/pusher.h"
 
 namespace coilsim {
 namespace {
@@ -115,8 +114,6 @@ void moveDevice(const Model& model, State& state) {
       if (m.retractLeft == 0) m.retractRate = 0;
     }
   }
-  // The pusher's force limit acts in the step on what this push inserts (physics/pusher.h).
-  const double pushFrom = deployed, pushRate = m.pushRate, pushLeft = m.pushLeft;
   if (m.pushRate != 0) {
     deployed += advanceBy(m.pushRate, m.pushLeft, dt);
     if (m.pushLeft == 0) m.pushRate = 0;
@@ -137,12 +134,7 @@ void moveDevice(const Model& model, State& state) {
     m.pushRate = 0;
     notes.push_back("the coil is back inside the catheter");
   }
-  const int nodesBefore = state.rods[size_t(dep.chainRod)].activeNodes;
   if (!ds.detached && (deployed != ds.deployed || twist != ds.twist)) setDeployment(model, state, deployed, twist);
-  // A step that inserts or withdraws a node at the tip is not limited: the
-  // new node's placement jolts the partial beam by itself (physics/pusher.h).
-  const bool sameNodes = state.rods[size_t(dep.chainRod)].activeNodes == nodesBefore;
-  armPusher(model, state, pushFrom, pushRate > 0 && sameNodes ? deployed - pushFrom : 0.0, pushRate, pushLeft);
   syncCatheterDrawing(model, state);
 }
 

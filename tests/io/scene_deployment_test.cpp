@@ -104,19 +104,6 @@ TEST(SceneDeployment, CompilesToSiAndAppendsItsRodsAfterTheScenesRods) {
   EXPECT_DOUBLE_EQ(m.rods[dep.catheterRod].section.radius, 0.3e-3);
 }
 
-TEST(SceneDeployment, ReadsThePushersForceLimitInMillinewtons) {
-  // Default: the one declaration's (physics/device.h), in SI after compiling.
-  EXPECT_DOUBLE_EQ(compileModel(compileScene(parse(base()))).device->maxPushForce,
-                   kMaxPushForce.defaultValue * kMaxPushForce.toSI);
-  nlohmann::json doc = base();
-  doc["deployment"]["max_push_force_mn"] = 250;
-  EXPECT_DOUBLE_EQ(compileModel(compileScene(parse(doc))).device->maxPushForce, 0.25);
-  for (const nlohmann::json& bad : {nlohmann::json(0), nlohmann::json(-5), nlohmann::json(2e4), nlohmann::json("abc")})
-    EXPECT_CONTAINS(errorWith("/deployment/max_push_force_mn", bad),
-                    "d.json: /deployment/max_push_force_mn: expected a finite number in (0, 10000] mN")
-        << bad.dump();
-}
-
 TEST(SceneDeployment, CoilReusesTheRodReadersAndTheirMessages) {
   EXPECT_CONTAINS(errorWith("/deployment/coil/rest_shape/type", "spiral"),
                   "d.json: /deployment/coil/rest_shape/type: expected one of \"straight\", \"helix\"");

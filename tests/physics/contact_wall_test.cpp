@@ -184,11 +184,6 @@ std::unique_ptr<Cavity> cavityDeployment(double coilLength, int beams, bool wall
   d.tip.direction = Vec3(0, 0, 1);
   d.tip.normal = Vec3(1, 0, 0);
   d.catheterDrawLength = 0.5e-3;
-  // These tests drive the wall by a prescribed push (no force limit): these
-  // solid wires, a thousand times stiffer in bending than a real coil, need
-  // more than a hand's 100 mN to curl out along the wall (the 0.356 mm one
-  // more than 10 N; docs/contact.md, "The pusher's force limit").
-  d.maxPushForce = INFINITY;
   def.device = d;
   c->model = compileModel(def);
   c->dep = *c->model.device;
