@@ -183,24 +183,6 @@ inline constexpr KnownBug kRefitStallsWithContacts{
     "known bug: dynamic stages in which loops land on one another are chaotic and the validation fit cannot "
     "follow them; see tests/support/known_bugs.h"};
 
-// Fixed: on self-contact-dynamic the refit with self_contact fitted E =
-// 5.98 +- 0.23 GPa for a true 6.8 (3.6 sigma). Not the contact law, the
-// step, friction or buoyancy: refitted with each changed (dt/2, dt/4, 1 and
-// 50 N/mm, Coulomb 0.1, no contact damping, water's buoyancy and drag, 1 mm
-// beams) E went anywhere from 4.85 to 6.76, and from starts of 5.0, 6.0,
-// 6.8, 7.5, 8.5 GPa the same fit ended at 5.0, 5.5, 6.2, 6.8, 7.7: it
-// stopped near its start. The dynamic stage lands in stackings that change
-// with E (0.1 GPa apart its chi-square went 71, 267, 61; still 127 at
-// 0.3 s after capture: another rest state, not a swing), on a trend that is
-// flat from 5.5 to 8 GPa. The static stages alone fit 6.33 +- 0.37 from
-// any start. Now a dynamic stage that jumps under 1 % changes of E is left
-// out of the parameter fit (still compared, judged and reported;
-// validation/fit_staged.h): 6.34 +- 0.37 GPa, 1.2 sigma.
-inline constexpr KnownBug kSelfContactDynamicBiasesE{
-    false,
-    "known bug: on a dynamic stage with loops landing on one another the refit with self_contact recovers the "
-    "shape but not E (12 % low, 3.6 sigma); see tests/support/known_bugs.h"};
-
 // Fixed: wall penetration during a deployment, not only at its end. The
 // scene runs record the deepest wall penetration of the wire at every
 // detection of a step, its substeps' too (result.json
