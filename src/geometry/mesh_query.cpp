@@ -115,6 +115,40 @@ int MeshQuery::crossings(const Vec3& o, const Vec3& dir) const {
   return count;
 }
 
+int MeshQuery::firstHit(const Vec3& o, const Vec3& dir) const {
+  int hit = -1;
+  double nearest = std::numeric_limits<double>::infinity();
+  if (nodes_.empty()) return hit;
+  const Vec3 inv = dir.cwiseInverse();
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top) {
+    const Node& node = nodes_[stack[--top]];
+    if (!rayHitsBox(node.box, o, inv)) continue;
+    if (node.left >= 0) {
+      stack[top++] = node.left, stack[top++] = node.right;
+      continue;
+    }
+    for (int i = node.first; i < node.first + node.count; ++i) {
+      const Eigen::Vector3i& f = mesh_.triangles[order_[i]];
+      const Vec3 &a = mesh_.vertices[f[0]], &b = mesh_.vertices[f[1]], &c = mesh_.vertices[f[2]];
+      const Vec3 e1 = b - a, e2 = c - a, pv = dir.cross(e2);
+      const double det = e1.dot(pv);
+      if (std::abs(det) <= 1e-12 * e1.norm() * e2.norm()) continue;  // parallel to the triangle
+      const double invDet = 1.0 / det;
+      const Vec3 tv = o - a;
+      const double u = tv.dot(pv) * invDet;
+      const Vec3 qv = tv.cross(e1);
+      const double v = dir.dot(qv) * invDet;
+      const double t = e2.dot(qv) * invDet;
+      if (u < 0 || v < 0 || u + v > 1 || !(t > 0) || t >= nearest) continue;
+      nearest = t, hit = order_[i];
+    }
+  }
+  return hit;
+}
+
 bool MeshQuery::inside(const Vec3& p) const {
   for (const Vec3& d : kRayDirections) {
     const int n = crossings(p, d);

@@ -31,6 +31,10 @@ class MeshQuery {
   // Number of triangles a ray from `origin` along `direction` crosses, or -1
   // when it passes within numerical reach of an edge or vertex.
   int crossings(const Vec3& origin, const Vec3& direction) const;
+  // The first triangle a ray from `origin` along `direction` meets (the
+  // nearest crossing at t > 0), or -1 when it meets none. A ray through an
+  // edge returns either triangle.
+  int firstHit(const Vec3& origin, const Vec3& direction) const;
 
   const TriangleMesh& mesh() const { return mesh_; }
 

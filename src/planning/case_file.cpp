@@ -56,7 +56,11 @@ Sac readSac(const JsonNode& n) {
   const Plane neck = readNeckPlane(n.child("neck_plane"));
   if (n.has("mesh")) {
     auto mesh = std::make_shared<TriangleMesh>(io::loadMeshFile(besideFile(n.file(), n.child("mesh").string())));
-    return makeSac(std::move(mesh), neck);
+    try {
+      return makeSac(std::move(mesh), neck);
+    } catch (const std::invalid_argument& e) {
+      n.child("neck_plane").fail(e.what());
+    }
   }
   const JsonNode s = n.child("sphere");
   if (!s.isObject()) s.expected("{\"centre_mm\": [x, y, z], \"radius_mm\": r, \"subdivisions\": 5}");

@@ -26,7 +26,7 @@ LiveReadouts::LiveReadouts(const Sac& sac, const Deployment& dep, double wallFor
       chainRod_(dep.chainRod),
       catheterNodes_(dep.tipNode),
       threshold_(wallForceLimit) {
-  sacVolume_ = volumeOnSide(*sac_.mesh, sac_.neck);
+  sacVolume_ = sacVolume(sac_);
   neck_ = sampleNeck(sac_);
 }
 

@@ -61,7 +61,7 @@ struct SacMetrics {
   bool protruding = false;
 };
 
-// Measures one configuration. `sacVolume` is volumeOnSide(mesh, neck), computed once by the caller.
+// Measures one configuration. `sacVolume` is sacVolume(sac), computed once by the caller.
 SacMetrics measureSac(const Sac& sac, double sacVolume, const NeckGrid& neck, const CoilLines& coil,
                       const MetricOptions& options = {});
 

@@ -45,7 +45,7 @@ Vec3 rotate(const Vec3& v, const Vec3& k, double a) {
 void prepareSac(PlanSetup& setup) {
   if (!setup.sac.mesh) throw std::invalid_argument("the plan has no sac surface");
   setup.sac = makeSac(setup.sac.mesh, setup.sac.neck);
-  setup.sacVolume = volumeOnSide(*setup.sac.mesh, setup.sac.neck);
+  setup.sacVolume = sacVolume(setup.sac);
   if (!(setup.sacVolume > 0))
     throw std::invalid_argument("the neck plane leaves no volume on the sac side (does its normal point into the sac?)");
   setup.neck = sampleNeck(setup.sac);

@@ -1,11 +1,13 @@
 // Volumes, inside tests and clipped lengths against a closed triangle surface.
 #include "planning/sac_geometry.h"
 
+#include "geometry/sac_morphology.h"
 #include "geometry/volume.h"
 
 #include <algorithm>
 #include <array>
 #include <map>
+#include <stdexcept>
 #include <vector>
 
 namespace coilsim::planning {
@@ -35,7 +37,50 @@ Sac makeSac(std::shared_ptr<const TriangleMesh> mesh, const Plane& neck) {
   sac.mesh = std::move(mesh);
   sac.neck = neck;
   sac.neck.normal.normalize();
+  // Pieces on the sac side: the one nearest any point holds every triangle
+  // reaching that side exactly when there is one piece.
+  const TriangleMesh& m = *sac.mesh;
+  const geometry::Plane cut{sac.neck.point, sac.neck.normal};
+  size_t above = 0;
+  for (const auto& f : m.triangles)
+    above += sac.neck.signedDistance(m.vertices[f[0]]) > 0 || sac.neck.signedDistance(m.vertices[f[1]]) > 0 ||
+             sac.neck.signedDistance(m.vertices[f[2]]) > 0;
+  const std::vector<char> any = geometry::sacPiece(m, cut, sac.neck.point);
+  if (size_t(std::count(any.begin(), any.end(), char(1))) == above) return sac;
+  // Several pieces: the sac's is the one over the neck's point.
+  Eigen::AlignedBox3d box;
+  for (const Vec3& v : m.vertices) box.extend(v);
+  const Vec3 start = sac.neck.point + 1e-9 * box.diagonal().norm() * sac.neck.normal;
+  const int hit = sac.query->inside(start) ? sac.query->firstHit(start, sac.neck.normal) : -1;
+  if (hit < 0)
+    throw std::invalid_argument(
+        "the neck plane cuts the surface into several pieces on the sac side, and its point is not inside the "
+        "surface, so which piece is the sac cannot be told: put the point in the ostium");
+  const auto& f = m.triangles[size_t(hit)];
+  sac.pieceSeed = (m.vertices[f[0]] + m.vertices[f[1]] + m.vertices[f[2]]) / 3.0;
+  sac.piece = std::make_shared<const std::vector<char>>(geometry::sacPiece(m, cut, sac.pieceSeed));
   return sac;
+}
+
+double sacVolume(const Sac& sac) {
+  if (!sac.piece) return volumeOnSide(*sac.mesh, sac.neck);
+  return geometry::measureSac(*sac.mesh, geometry::Plane{sac.neck.point, sac.neck.normal}, sac.pieceSeed, 0, true).volume;
+}
+
+namespace {
+
+// Under the sac's piece: the ray along the normal, which stays on the sac
+// side, leaves the inside through the piece bounding the point's region.
+bool underSacPiece(const Sac& sac, const Vec3& x) {
+  if (!sac.piece) return true;
+  const int hit = sac.query->firstHit(x, sac.neck.normal);
+  return hit >= 0 && (*sac.piece)[size_t(hit)];
+}
+
+}  // namespace
+
+bool inSac(const Sac& sac, const Vec3& x) {
+  return sac.neck.signedDistance(x) >= 0 && sac.query->inside(x) && underSacPiece(sac, x);
 }
 
 double enclosedVolume(const TriangleMesh& mesh) { return geometry::enclosedVolume(mesh); }
@@ -72,7 +117,10 @@ double lengthOnSide(const Sac& sac, const Vec3& a, const Vec3& b, bool sacSide) 
   for (size_t i = 0; i + 1 < cuts.size(); ++i) {
     if (cuts[i + 1] - cuts[i] <= 0) continue;
     const Vec3 m = a + 0.5 * (cuts[i] + cuts[i + 1]) * d;
-    if ((sac.neck.signedDistance(m) >= 0) == sacSide && sac.query->inside(m)) inside += (cuts[i + 1] - cuts[i]) * len;
+    const bool above = sac.neck.signedDistance(m) >= 0;
+    if (sacSide != above && !(above && sac.piece)) continue;
+    if (!sac.query->inside(m)) continue;
+    if ((above && underSacPiece(sac, m)) == sacSide) inside += (cuts[i + 1] - cuts[i]) * len;
   }
   return inside;
 }

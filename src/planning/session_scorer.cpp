@@ -107,7 +107,7 @@ SessionScorer::SessionScorer(const PracticeCase& pc, const std::string& coil, co
       dt_(dt),
       sac_(pc.sac) {
   sac_.neck.normal.normalize();
-  sacVolume_ = volumeOnSide(*sac_.mesh, sac_.neck);
+  sacVolume_ = sacVolume(sac_);
   neck_ = sampleNeck(sac_);
   score_.caseName = pc.name;
   score_.coil = coil;
@@ -152,7 +152,7 @@ void SessionScorer::afterStep(const Model& model, const State& state, bool ok, c
   if (ds.detached && !wasDetached_) {
     score_.detached = true;
     const Vec3& tip = ds.releasedAt;
-    score_.detachInSac = sac_.neck.signedDistance(tip) >= 0 && insideSurface(sac_, tip) && !measure(model, state).protruding;
+    score_.detachInSac = inSac(sac_, tip) && !measure(model, state).protruding;
   }
   if (!ok) {
     score_.ok = false;

@@ -71,6 +71,10 @@ TEST(CaseNew, PatientSurfacesGiveACaseWhoseCoilStaysInTheSac) {
                                         "--jobs", "2", "--speed", "10", "--no-screenshots", "--out", (dir / "plan").string()},
                                        dir);
     ASSERT_EQ(plan.code, 0) << plan.err << plan.out;
+    // The plan packs the sac the case measured (on dolfin the neck plane
+    // also cuts the daughter vessels, which are not the sac).
+    EXPECT_NEAR(readJson(dir / "plan" / "plan.json")["sac_volume_mm3"].get<double>(),
+                readJson(dir / "case.json")["morphology"]["sac_volume_mm3"].get<double>(), 0.05);
     const nlohmann::json coils = readJson(dir / "plan" / "plan.json")["coils"];
     ASSERT_EQ(coils.size(), 2u);
     const nlohmann::json &small = coils[0], &pressing = coils[1];

@@ -95,6 +95,28 @@ TEST(MeshQuery, LargeMeshInsideTestMatchesTheSphere) {
   EXPECT_EQ(wrong, 0);
 }
 
+// The first triangle along a ray: from inside the unit cube along each
+// axis, the face the ray leaves by (its normal is the axis); from outside,
+// the face it enters by; a ray away from the cube meets none.
+TEST(MeshQuery, FirstHitIsTheNearestFaceAlongTheRay) {
+  const TriangleMesh cube = test::unitCube();
+  const MeshQuery q(cube);
+  const auto faceNormal = [&](int t) {
+    const Eigen::Vector3i& f = cube.triangles[size_t(t)];
+    return Vec3((cube.vertices[f[1]] - cube.vertices[f[0]]).cross(cube.vertices[f[2]] - cube.vertices[f[0]]).normalized());
+  };
+  const Vec3 inside(0.31, 0.42, 0.27);
+  for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)}) {
+    const int t = q.firstHit(inside, d);
+    ASSERT_GE(t, 0);
+    EXPECT_NEAR(faceNormal(t).dot(d), 1.0, 1e-12);  // leaves through the face facing along the ray
+  }
+  const int entered = q.firstHit(Vec3(-2, 0.31, 0.42), Vec3::UnitX());
+  ASSERT_GE(entered, 0);
+  EXPECT_NEAR(faceNormal(entered).dot(Vec3::UnitX()), -1.0, 1e-12);  // the x = 0 face, not x = 1
+  EXPECT_EQ(q.firstHit(Vec3(2, 0.5, 0.5), Vec3::UnitX()), -1);
+}
+
 TEST(MeshQuery, EmptyMeshHasNothingInside) {
   const MeshQuery q(TriangleMesh{});
   EXPECT_FALSE(q.inside(Vec3::Zero()));

@@ -2,6 +2,9 @@
 #include "planning/sac_geometry.h"
 
 #include <cmath>
+#include <stdexcept>
+
+#include "geometry/marching_tets.h"
 
 #include <gtest/gtest.h>
 
@@ -63,6 +66,63 @@ TEST(SacGeometry, ChordLengthClippedBySphereAndNeckPlane) {
   EXPECT_NEAR(lengthBeyondNeck(sac, Vec3(0, 0, -10e-3), Vec3(0, 0, 10e-3)), R - 1e-3, 0.005 * (R - 1e-3));
   // Entirely inside: the whole length.
   EXPECT_DOUBLE_EQ(lengthInSac(sac, Vec3(0, 0, 0), Vec3(1e-3, 1e-3, 1e-3)), std::sqrt(3.0) * 1e-3);
+}
+
+// A parent vessel (a tube of radius 2 mm along x) with two balls of radius
+// 3.2 mm on it, centred 4 mm above its axis at x = -4 and +4 mm; a
+// horizontal neck plane at z = 2.5 mm cuts each ball apart (sections of
+// radius 2.83 mm, 8 mm apart), above the tube. The sac is the left ball's
+// cap, over the neck's point; the right one stands for a daughter vessel
+// that rises past the plane of a bifurcation's neck. Closed forms: the cap
+// above a plane 1.5 mm below a ball's centre, and chords of the balls.
+struct TwoPieces {
+  static constexpr double R = 3.2e-3, zc = 4e-3, zn = 2.5e-3, xc = 4e-3;
+  Sac sac;
+  TwoPieces() {
+    const geometry::Field field = [](const Vec3& p) {
+      const double tube = std::max(std::hypot(p.y(), p.z()) - 2, std::abs(p.x()) - 12);
+      return std::min({tube, (p - Vec3(-4, 0, 4)).norm() - 3.2, (p - Vec3(4, 0, 4)).norm() - 3.2});
+    };
+    TriangleMesh mesh = geometry::polygonise(field, Vec3(-13, -4, -3), Vec3(13, 4, 8), 0.2);
+    for (Vec3& v : mesh.vertices) v *= 1e-3;
+    sac = makeSac(std::make_shared<TriangleMesh>(std::move(mesh)), Plane{Vec3(-xc, 0, zn), Vec3::UnitZ()});
+  }
+  static double cap() {
+    const double h = R + (zc - zn);
+    return M_PI * h * h * (3 * R - h) / 3.0;
+  }
+};
+
+TEST(SacGeometry, APlaneCuttingTwoPiecesTakesTheOneOverItsPointAsTheSac) {
+  const TwoPieces t;
+  ASSERT_TRUE(t.sac.piece);
+  // Volume: the left cap only; the whole sac side holds both caps.
+  EXPECT_NEAR(sacVolume(t.sac), TwoPieces::cap(), 0.02 * TwoPieces::cap());
+  EXPECT_NEAR(volumeOnSide(*t.sac.mesh, t.sac.neck), 2 * TwoPieces::cap(), 0.04 * TwoPieces::cap());
+  // Points: over the neck's point, in the other piece, below the plane, outside.
+  EXPECT_TRUE(inSac(t.sac, Vec3(-4e-3, 0.5e-3, 5e-3)));
+  EXPECT_FALSE(inSac(t.sac, Vec3(4e-3, 0.5e-3, 5e-3)));
+  EXPECT_FALSE(inSac(t.sac, Vec3(-4e-3, 0, 1e-3)));
+  EXPECT_FALSE(inSac(t.sac, Vec3(0, 0, 5e-3)));
+  // A line through both balls 1 mm below their centres: one chord in the
+  // sac, the other beyond it (in the daughter), and none in the tube.
+  const double z = 3e-3, chord = 2 * std::sqrt(TwoPieces::R * TwoPieces::R - (TwoPieces::zc - z) * (TwoPieces::zc - z));
+  EXPECT_NEAR(lengthInSac(t.sac, Vec3(-12e-3, 0, z), Vec3(12e-3, 0, z)), chord, 0.01 * chord);
+  EXPECT_NEAR(lengthBeyondNeck(t.sac, Vec3(-12e-3, 0, z), Vec3(12e-3, 0, z)), chord, 0.01 * chord);
+  // Vertical lines through each ball's centre, from the axis of the tube up.
+  const double upper = TwoPieces::zc + TwoPieces::R - TwoPieces::zn;
+  EXPECT_NEAR(lengthInSac(t.sac, Vec3(-4e-3, 0, 0), Vec3(-4e-3, 0, 9e-3)), upper, 0.01 * upper);
+  EXPECT_NEAR(lengthBeyondNeck(t.sac, Vec3(-4e-3, 0, 0), Vec3(-4e-3, 0, 9e-3)), TwoPieces::zn, 0.01 * TwoPieces::zn);
+  EXPECT_NEAR(lengthInSac(t.sac, Vec3(4e-3, 0, 0), Vec3(4e-3, 0, 9e-3)), 0.0, 1e-12);
+  EXPECT_NEAR(lengthBeyondNeck(t.sac, Vec3(4e-3, 0, 0), Vec3(4e-3, 0, 9e-3)), TwoPieces::zc + TwoPieces::R, 0.01 * upper);
+}
+
+TEST(SacGeometry, APlaneCuttingTwoPiecesWithItsPointOutsideIsRefused) {
+  const TwoPieces t;
+  // Between the balls, above the tube: outside the surface.
+  EXPECT_THROW(makeSac(t.sac.mesh, Plane{Vec3(0, 0, TwoPieces::zn), Vec3::UnitZ()}), std::invalid_argument);
+  // One piece on the sac side: no piece is chosen (the whole side is the sac).
+  EXPECT_FALSE(makeSac(std::make_shared<TriangleMesh>(makeIcosphere(Vec3::Zero(), 1e-3, 3)), Plane{}).piece);
 }
 
 }  // namespace
