@@ -130,7 +130,7 @@ AutoDeployResult autoDeploy(const Model& model, State& state, const AutoDeployOp
     r.maxWallPenetrationOfRadius = state.stats.maxWallPenetrationOfRadius;
     if (contacts && contacts(model, state, forces)) {
       r.wallForcesAvailable = true;
-      r.wall.add(state, forces, dt, o.wallForceThreshold);
+      r.wall.add(state, dt, o.wallForceThreshold);
     }
     if (ds.detached) continue;
     const bool felt = feel.add(dep, state, !pusherMoved, dt);

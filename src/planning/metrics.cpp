@@ -158,15 +158,9 @@ std::string occlusionClassName(int cls) {
   }
 }
 
-void WallForceStats::add(const State& state, const std::vector<std::vector<double>>& nodeForces, double dt,
-                         double threshold) {
-  for (const auto& rod : nodeForces)
-    for (const double m : rod) {
-      if (m <= 0) continue;
-      sum += m;
-      ++samples;
-    }
+void WallForceStats::add(const State& state, double dt, double threshold) {
   const WallLoad& load = state.stats.wallLoad;
+  if (load.now > 0) sum += load.now, ++samples;
   max = std::max(max, load.max);
   peak = std::max(peak, load.peak);
   if (load.now > threshold) timeAbove += dt;

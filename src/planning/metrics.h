@@ -76,19 +76,20 @@ std::string occlusionClassName(int cls);
 // A run's wall load over time. The figure shown everywhere is the
 // sustained load of the contact layer (physics/contact/wall_load.h: the
 // largest node force the wall carried at every step of the last 5 ms),
-// which the State keeps; this adds what a plan also tabulates: the mean
-// force of the contacting nodes and the time the sustained load spent above
-// a safety threshold.
+// which the State keeps; this adds what a plan also tabulates: its mean
+// over the steps it was not zero (the time the coil pressed on the wall)
+// and the time it spent above a safety threshold. The mean is of the same
+// figure as the maximum, so it never exceeds it (a mean of single-step
+// node forces did, by the penalty's spikes: 25 mN beside a 0.1 mN maximum).
 struct WallForceStats {
   double max = 0;         // N, largest sustained load (WallLoad::max)
   double peak = 0;        // N, largest node force in any single step (penalty spikes included)
-  double sum = 0;         // N, summed over samples of contacting nodes
-  long samples = 0;       // contacting node samples
+  double sum = 0;         // N, the sustained load summed over the steps it was > 0
+  long samples = 0;       // steps with a sustained load > 0
   double timeAbove = 0;   // s with the sustained load above the threshold
   double mean() const { return samples ? sum / double(samples) : 0.0; }
-  // After a step taken: the state's sustained load (state.stats.wallLoad),
-  // and the step's per-node force magnitudes (nodes with f > 0 are in contact) for the mean.
-  void add(const State& state, const std::vector<std::vector<double>>& nodeForces, double dt, double threshold);
+  // After a step taken: the state's sustained load (state.stats.wallLoad).
+  void add(const State& state, double dt, double threshold);
 };
 
 }  // namespace coilsim::planning

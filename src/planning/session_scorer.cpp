@@ -164,7 +164,7 @@ void SessionScorer::afterStep(const Model& model, const State& state, bool ok, c
     score_.maxTipForce = std::max(score_.maxTipForce, felt_.felt);
   if (contacts_ && contacts_(model, state, forces_)) {
     score_.wallForcesAvailable = true;
-    wall_.add(state, forces_, dt_, case_.goal.maxWallForce);
+    wall_.add(state, dt_, case_.goal.maxWallForce);
     score_.maxWallForce = wall_.max;
     score_.timeAboveSafety = wall_.timeAbove;
   }

@@ -96,19 +96,30 @@ TEST(Metrics, OcclusionClassThresholds) {
 }
 
 TEST(Metrics, WallForceStatisticsFollowTheStatesSustainedLoad) {
-  // Two contacting nodes at 5 mN and 1 mN for 10 steps of 1 ms: the mean is
-  // over contacting node samples, the time above 2 mN counts the steps
-  // whose sustained load (5 mN once the 5 ms window is full) is above it.
+  // A node pressed with 5 mN for 10 steps of 1 ms, then a 400 mN spike of
+  // one step, then 2 mN for 10 steps. The sustained load (the smallest of
+  // the last 5 steps' largest forces) is 5 mN from the step the window
+  // fills (the 5th) to the spike's (7 steps; the spike never lasts) and
+  // 2 mN for the last 10. Its mean over the steps it is not zero is
+  // (7 x 5 + 10 x 2) / 17 mN, below its maximum as a mean of one figure must
+  // be; the time above 2.5 mN is those 7 steps.
   State state;
   WallForceStats w;
-  for (int s = 0; s < 10; ++s) {
-    addWallLoad(state.stats.wallLoad, 5e-3, 1e-3, 1e-3 * s);
-    w.add(state, {{0.0, 5e-3, 1e-3}}, 1e-3, 2e-3);
-  }
+  int step = 0;
+  const auto press = [&](double f, int steps) {
+    for (int s = 0; s < steps; ++s, ++step) {
+      addWallLoad(state.stats.wallLoad, f, 1e-3, 1e-3 * step);
+      w.add(state, 1e-3, 2.5e-3);
+    }
+  };
+  press(5e-3, 10);
+  press(0.4, 1);
+  press(2e-3, 10);
   EXPECT_DOUBLE_EQ(w.max, 5e-3);
-  EXPECT_DOUBLE_EQ(w.peak, 5e-3);
-  EXPECT_DOUBLE_EQ(w.mean(), 3e-3);
-  EXPECT_NEAR(w.timeAbove, 6e-3, 1e-12);  // steps 5..10 of the window
+  EXPECT_DOUBLE_EQ(w.peak, 0.4);
+  EXPECT_NEAR(w.mean(), (7 * 5e-3 + 10 * 2e-3) / 17, 1e-15);
+  EXPECT_LE(w.mean(), w.max);
+  EXPECT_NEAR(w.timeAbove, 7e-3, 1e-12);
 }
 
 }  // namespace
