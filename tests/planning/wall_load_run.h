@@ -3,6 +3,8 @@
 // case, the run whose wall load the front ends must all report alike
 // (session_scorer_test.cpp; session_scorer_window_test.cpp with the ui
 // layer). Computed once per test binary, on first use.
+#include <gtest/gtest.h>
+
 #include <string>
 
 #include "planning/auto_deploy.h"
@@ -39,5 +41,22 @@ inline const WallLoadRun& wallLoadRun() {
   }();
   return run;
 }
+
+// Whether the run is worth comparing: the plan ran, and its coil pressed on
+// the wall (a load of zero everywhere would prove nothing).
+inline ::testing::AssertionResult loadedTheWall(const WallLoadRun& run) {
+  if (!run.plan.ok) return ::testing::AssertionFailure() << "the plan failed: " << run.plan.error;
+  if (!run.plan.wallForcesAvailable) return ::testing::AssertionFailure() << "the plan reports no wall forces";
+  if (!(run.plan.wall.max > 0.0)) return ::testing::AssertionFailure() << "the coil never pressed on the wall";
+  return ::testing::AssertionSuccess();
+}
+
+// The tests on the run: each starts only when the run is worth comparing.
+class WallLoadFigure : public ::testing::Test {
+ protected:
+  void SetUp() override { ASSERT_TRUE(loadedTheWall(run)); }
+  const WallLoadRun& run = wallLoadRun();
+  const AutoDeployResult& plan = run.plan;
+};
 
 }  // namespace coilsim::planning
