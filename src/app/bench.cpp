@@ -17,6 +17,7 @@
 #include "app/graphics.h"
 #include "app/run_scene.h"
 #include "app/bench_dense.h"
+#include "io/units.h"
 #include "physics/run.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
@@ -142,7 +143,7 @@ void benchDeployment(Figures& fig, int beams, double speedMmS, bool quick) {
   def.device = d;
   const Model m = compileModel(def);
   State s = makeState(m);
-  const double v = speedMmS * 1e-3, simulated = (quick ? 0.25 : 1.0) * d.coilLength / v;
+  const double v = units::mmPerSToMPerS(speedMmS), simulated = (quick ? 0.25 : 1.0) * d.coilLength / v;
   const auto t0 = Clock::now();
   const TimelineRun run = runTimeline(m, s, {{0.0, {DeviceCommand::Kind::Push, v, 0}}}, simulated);
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();

@@ -11,6 +11,7 @@
 #include <time.h>
 
 #include "geometry/phantom.h"
+#include "io/units.h"
 #include "physics/run.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
@@ -41,7 +42,7 @@ void benchContactFigures(const std::function<void(const std::string&, double)>& 
   spec.sacDiameter = 10;
   spec.resolution = 0.33;
   geometry::Phantom phantom = geometry::makePhantom(spec);
-  for (Vec3& v : phantom.mesh.vertices) v *= 1e-3;
+  for (Vec3& v : phantom.mesh.vertices) v *= units::kMetresPerMm;
   const geometry::PhantomInfo& info = phantom.info;
 
   ModelDef def;
@@ -62,7 +63,7 @@ void benchContactFigures(const std::function<void(const std::string&, double)>& 
   d.coilMaterial = {7.5e9, shearModulusOf(7.5e9, 0.39), 21450};
   d.coilSection = circularSection(0.3556e-3, 0.39);
   d.tip.direction = info.neck.normal;
-  d.tip.position = 1e-3 * (info.neck.point + 2.0 * info.neck.normal);
+  d.tip.position = units::kMetresPerMm * (info.neck.point + 2.0 * info.neck.normal);
   d.tip.normal = info.axisU;
   d.catheterDrawLength = 2e-3;
   def.device = d;
@@ -123,20 +124,20 @@ void benchContactFigures(const std::function<void(const std::string&, double)>& 
   const double freeStep = contactFree / n;
   set("contact_free_step_us_n300", freeStep);
   set("contact_over_free_n300", freeStep > 0 ? contact / n / freeStep : 0.0);
-  set("contact_max_penetration_um", penetration * 1e6);
+  set("contact_max_penetration_um", units::mToUm(penetration));
   set("contact_max_penetration_of_radius", penetration / d.coilSection.radius);
   set("contact_run_ok", ok ? 1.0 : 0.0);
   set("contact_free_run_ok", freeOk ? 1.0 : 0.0);
   if (json) return;
   std::printf("contact: 150 mm coil (300 beams) pushed %.0f mm at 10 mm/s into a %zu-triangle sidewall phantom "
               "(wall + self contact), %d sampled steps%s:\n",
-              pushed * 1e3, phantom.mesh.triangles.size(), samples, ok ? "" : " (a step was refused: figures cut short)");
+              units::mToMm(pushed), phantom.mesh.triangles.size(), samples, ok ? "" : " (a step was refused: figures cut short)");
   std::printf("  detection %.1f us of thread CPU time; every segment queried afresh (the baseline, same states) %.1f us: "
               "%.2fx\n",
               detect / n, detectFresh / n, detect > 0 ? detectFresh / detect : 0.0);
   std::printf("  step %.1f us, of which detection %.1f us; the same deployment without contacts %.1f us per step; "
               "ratio %.2f; deepest wall penetration %.1f um (%.1f %% of the wire radius)\n",
-              contact / n, detect / n, freeStep, freeStep > 0 ? contact / n / freeStep : 0.0, penetration * 1e6,
+              contact / n, detect / n, freeStep, freeStep > 0 ? contact / n / freeStep : 0.0, units::mToUm(penetration),
               100 * penetration / d.coilSection.radius);
 }
 

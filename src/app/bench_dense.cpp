@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/units.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
 #include "physics/run.h"
@@ -39,7 +40,7 @@ void benchDenseFigures(const std::function<void(const std::string&, double)>& se
                 "  %8s %8s %8s %10s %12s %14s %14s %8s\n",
                 "coil_mm", "segments", "packing", "step_us", "detect_us", "detect_fresh_us", "contacts/seg", "us/seg");
   for (int mm : lengths) {
-    const Model model = compileModel(planning::denseSacModel(mm * 1e-3));
+    const Model model = compileModel(planning::denseSacModel(units::mmToM(mm)));
     State s = makeState(model);
     int segments = 0;
     for (const RodModel& r : model.rods) segments += r.nnode - 1;
@@ -68,7 +69,7 @@ void benchDenseFigures(const std::function<void(const std::string&, double)>& se
       ok = rep.ok() && ok;
       for (const RodState& r : s.rods) contacts += long(r.contact.wall.size() + r.contact.self.size() + r.contact.rod.size());
     }
-    const double packing = planning::densePacking(mm * 1e-3);
+    const double packing = planning::densePacking(units::mmToM(mm));
     const std::string k = "_" + std::to_string(mm) + "mm";
     set("dense_step_us" + k, stepUs / steps);
     set("dense_detect_us" + k, detectUs / steps);

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "io/units.h"
 #include "validation/diagnose.h"
 #include "validation/generate.h"
 
@@ -34,7 +35,7 @@ Measurement benchMeasurement(bool hidden) {
   m.tip.normal = Vec3::UnitZ();
   for (double l : {0.030, 0.060, 0.100}) {
     Stage s;
-    s.name = std::to_string(int(l * 1e3)) + " mm";
+    s.name = std::to_string(int(units::mToMm(l))) + " mm";
     s.deployed = l;
     m.stages.push_back(s);
   }
@@ -48,8 +49,8 @@ Measurement benchMeasurement(bool hidden) {
     truth.effects.back().set("bending_stiffness_n_mm2", 8e-6);
     truth.effects.back().set("segment_length_mm", 12e-3);
     truth.effects.push_back(EffectRegistry::global().use("gravity_tilt"));
-    truth.effects.back().set("tilt_a_deg", -4.0 * M_PI / 180);
-    truth.effects.back().set("tilt_b_deg", 2.0 * M_PI / 180);
+    truth.effects.back().set("tilt_a_deg", units::degToRad(-4.0));
+    truth.effects.back().set("tilt_b_deg", units::degToRad(2.0));
   }
   GenerateOptions g;
   g.sim = {2e-3, 2e-3, 1e-3};

@@ -54,11 +54,11 @@ void reportOne(const WorkbenchArgs& a, const OneFile& f, const StageSimulator& s
   base["stages"] = stagesJson(cmp, d.baselineStages);
   base["fitted"] = fittedJson(d.baseline.fitted);
   base["effects"] = ordered_json::array();
-  base["rss_mm2"] = d.baseline.rss * 1e6;
+  base["rss_mm2"] = units::m2ToMm2(d.baseline.rss);
   base["prior_check"] = {{"implausible", d.implausible},
                          {"verdict", d.priorVerdict.empty() ? std::string("every fitted value is inside its plausible band")
                                                             : d.priorVerdict}};
-  base["regularised"] = {{"fitted", fittedJson(d.regularisedBaseline.fitted)}, {"rss_mm2", d.regularisedBaseline.rss * 1e6}};
+  base["regularised"] = {{"fitted", fittedJson(d.regularisedBaseline.fitted)}, {"rss_mm2", units::m2ToMm2(d.regularisedBaseline.rss)}};
   j["baseline"] = base;
   auto candidateJson = [&](const CandidateResult& c) {
     ordered_json cj;

@@ -179,7 +179,7 @@ int plan(const PlanArgs& a) {
   if (chosen.empty()) return usage("no coils to plan: give --coils a,b,c");
   if (a.spacingMm) setup.spacingMm = *a.spacingMm;
   if (a.speedMmS) setup.deploy.pushSpeed = units::mmPerSToMPerS(*a.speedMmS);
-  if (a.thresholdMn) setup.deploy.forceThreshold = *a.thresholdMn * 1e-3;  // mN -> N
+  if (a.thresholdMn) setup.deploy.forceThreshold = units::mnToN(*a.thresholdMn);
   if (a.maxTime) setup.deploy.maxTime = *a.maxTime;
   try {
     planning::prepareSac(setup);
@@ -199,7 +199,7 @@ int plan(const PlanArgs& a) {
   std::filesystem::create_directories(a.out, ec);
   if (ec) return usage("cannot create " + a.out + ": " + ec.message());
   std::fprintf(stderr, "coilsim plan: %zu run(s) on %d thread(s), sac %.1f mm^3\n", candidates.size(), a.jobs,
-               units::mToMm(units::mToMm(units::mToMm(setup.sacVolume))));
+               units::m3ToMm3(setup.sacVolume));
   const std::vector<CandidateResult> results = runCandidatesShowingProgress(setup, candidates, a.jobs, a.input);
   if (stopRequested())  // what ran is written below; the exit code says it is not all
     std::fprintf(stderr, "coilsim plan: %s: %zu of %zu run(s) finished, written\n", stopReason(), results.size(),

@@ -251,7 +251,7 @@ ordered_json jointJson(const JointDiagnosis& d, const std::vector<std::string>& 
     return j;
   }
   j["fitted_jointly"] = fittedJson(d.joint.fitted);
-  j["rss_joint_mm2"] = r6(d.joint.rss * 1e6);
+  j["rss_joint_mm2"] = r6(units::m2ToMm2(d.joint.rss));
   ordered_json sp = ordered_json::array();
   for (const ParameterSpread& s : d.spread) {
     ordered_json per = ordered_json::array(), sig = ordered_json::array();
@@ -527,7 +527,7 @@ int runValidate(const std::vector<std::string>& args) {
   Progress progress("validate " + a.file, fit.empty() ? 0 : fo.maxEvaluations, "fit evaluations");
   fo.progress = [&](int k, double rms) {
     progress.update(k, "at most; a converged fit ends sooner");
-    if (!a.quiet) progress.line("  fit: evaluation " + std::to_string(k) + ", RMS residual " + fmt("%.4f", rms * 1e3) + " mm");
+    if (!a.quiet) progress.line("  fit: evaluation " + std::to_string(k) + ", RMS residual " + fmt("%.4f", units::mToMm(rms)) + " mm");
   };
   fo.stop = [] { return stopRequested(); };  // Ctrl-C: the report of the fit so far, marked not finished
   if (!fit.empty()) say("validate: fitting " + std::to_string(fit.size()) + " parameter(s)...");
@@ -582,7 +582,7 @@ int runValidate(const std::vector<std::string>& args) {
       md << "| " << v.name << " | " << fmt("%.5g", v.value / v.toSI) << unitSuffix(v.unit) << " | "
          << plusMinus(v.sigma / v.toSI, v.unit) << " |\n";
     md << "\nRMS residual per coordinate (mm) along the optimiser's evaluations:";
-    for (double h : r.history) md << " " << fmt("%.4f", h * 1e3);
+    for (double h : r.history) md << " " << fmt("%.4f", units::mToMm(h));
     md << "\n\n";
   }
   md << "Where the remaining residual lies: " << fp.summary << "\n\n";

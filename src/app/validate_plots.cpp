@@ -1,6 +1,7 @@
 // Software-drawn charts of the validation workbench (see validate_plots.h).
 #include "app/validate_plots.h"
 #include "app/format.h"
+#include "io/units.h"
 
 #include <algorithm>
 #include <array>
@@ -148,10 +149,10 @@ Canvas plotErrorAlongArc(const std::vector<validation::StageComparison>& stages,
   for (const auto& st : stages) {
     if (!st.ok) continue;
     for (size_t i = 0; i < st.s.size(); ++i) {
-      sMax = std::max(sMax, st.s[i] * 1e3);
-      eMax = std::max(eMax, (st.sim[i] - st.meas[i]).norm() * 1e3);
+      sMax = std::max(sMax, units::mToMm(st.s[i]));
+      eMax = std::max(eMax, units::mToMm((st.sim[i] - st.meas[i]).norm()));
     }
-    eMax = std::max(eMax, std::sqrt(3.0) * st.sigma * 1e3);
+    eMax = std::max(eMax, units::mToMm(std::sqrt(3.0) * st.sigma));
   }
   const Frame f{0, sMax, 0, 1.1 * eMax, 80, 40, width - 200, height - 50};
   f.draw(p, "arc length s from the catheter tip (mm)", "node error |x_sim - x_meas| (mm)", true);
@@ -165,9 +166,9 @@ Canvas plotErrorAlongArc(const std::vector<validation::StageComparison>& stages,
     legendY += 16;
     if (!st.ok) continue;
     for (size_t i = 1; i < st.s.size(); ++i)
-      p.line(f.px(st.s[i - 1] * 1e3), f.py((st.sim[i - 1] - st.meas[i - 1]).norm() * 1e3), f.px(st.s[i] * 1e3),
-             f.py((st.sim[i] - st.meas[i]).norm() * 1e3), col, 1.0);
-    const double floor = std::sqrt(3.0) * st.sigma * 1e3;
+      p.line(f.px(units::mToMm(st.s[i - 1])), f.py(units::mToMm((st.sim[i - 1] - st.meas[i - 1]).norm())), f.px(units::mToMm(st.s[i])),
+             f.py(units::mToMm((st.sim[i] - st.meas[i]).norm())), col, 1.0);
+    const double floor = units::mToMm(std::sqrt(3.0) * st.sigma);
     p.line(f.left, f.py(floor), f.right, f.py(floor), col, 0.0, true);
   }
   p.line(f.right + 15, legendY + 4, f.right + 40, legendY + 4, kGrey, 0.0, true);
@@ -190,7 +191,7 @@ Canvas plotOverlay(const validation::StageComparison& st, const validation::Stag
   // The same scale in both views, so that the two pictures compare.
   struct Range { double lo = 1e30, hi = -1e30; void add(double v) { lo = std::min(lo, v), hi = std::max(hi, v); } };
   Range rh, rv, rw;
-  for (const Vec3& x : all) rh.add(x.dot(h) * 1e3), rv.add(x.dot(up) * 1e3), rw.add(x.dot(w) * 1e3);
+  for (const Vec3& x : all) rh.add(units::mToMm(x.dot(h))), rv.add(units::mToMm(x.dot(up))), rw.add(units::mToMm(x.dot(w)));
   const int panelW = (width - 220) / 2, panelH = height - 90;
   const double span = std::max({rh.hi - rh.lo, (rv.hi - rv.lo) * panelW / double(panelH),
                                 (rw.hi - rw.lo) * panelW / double(panelH), 1.0}) * 1.08;
@@ -206,7 +207,7 @@ Canvas plotOverlay(const validation::StageComparison& st, const validation::Stag
   for (int view = 0; view < 2; ++view) {
     const Frame& f = view == 0 ? side : top;
     const Vec3& vAxis = view == 0 ? up : w;
-    auto P = [&](const Vec3& x, double& px, double& py) { px = f.px(x.dot(h) * 1e3), py = f.py(x.dot(vAxis) * 1e3); };
+    auto P = [&](const Vec3& x, double& px, double& py) { px = f.px(units::mToMm(x.dot(h))), py = f.py(units::mToMm(x.dot(vAxis))); };
     double ax, ay, bx, by;
     for (const Vec3& x : measured.centerline) {
       P(x, ax, ay);
@@ -219,7 +220,7 @@ Canvas plotOverlay(const validation::StageComparison& st, const validation::Stag
     for (size_t i = 1; i < st.sim.size(); ++i) {
       const double e = 0.5 * ((st.sim[i - 1] - st.meas[i - 1]).norm() + (st.sim[i] - st.meas[i]).norm());
       P(st.sim[i - 1], ax, ay), P(st.sim[i], bx, by);
-      p.line(ax, ay, bx, by, heat(errorScalePosition(e * 1e3)), 1.5);
+      p.line(ax, ay, bx, by, heat(errorScalePosition(units::mToMm(e))), 1.5);
     }
   }
   // Legend and colour bar.

@@ -172,8 +172,8 @@ int runValidateWindow(const WorkbenchArgs& a, const WindowArgs& w) {
       FitOptions fo;
       fo.params = names;
       fo.progress = [&](int k, double rms) {
-        if (!quiet) std::fprintf(stderr, "  fit: evaluation %d, RMS residual %.4f mm\n", k, rms * 1e3);
-        progress(k, rms * 1e3);
+        if (!quiet) std::fprintf(stderr, "  fit: evaluation %d, RMS residual %.4f mm\n", k, units::mToMm(rms));
+        progress(k, units::mToMm(rms));
       };
       fo.stop = stop;
       const FitResult r = identify(fsim, fcmp, start, fo);
@@ -193,7 +193,7 @@ int runValidateWindow(const WorkbenchArgs& a, const WindowArgs& w) {
       v.message = r.message;
       for (const FittedValue& f : r.fitted)
         v.fitted.push_back(f.name + " = " + fmt("%.5g", f.value / f.toSI) + unitSuffix(f.unit) + " " + plusMinus(f.sigma / f.toSI, f.unit));
-      for (double x : r.history) v.history.push_back(float(x * 1e3));
+      for (double x : r.history) v.history.push_back(float(units::mToMm(x)));
       return v;
     } catch (const std::exception& e) {
       out.ok = false;

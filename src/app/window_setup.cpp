@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "app/format.h"
+#include "io/units.h"
 #include "physics/integrator.h"
 #include "planning/live_readouts.h"
 
@@ -69,9 +70,9 @@ void applyCatheter(const CatheterChoice& choice, io::DeploymentSpec& dep) {
   // scene put it (in the parent vessel) and only the tip changes.
   const Vec3 d = c.direction.normalized();
   const Vec3 n = (c.referenceNormal - c.referenceNormal.dot(d) * d).normalized();
-  const double was = netTurnDeg(c.flexible, c.rest.type, c.rest.angleDeg) * M_PI / 180;
+  const double was = units::degToRad(netTurnDeg(c.flexible, c.rest.type, c.rest.angleDeg));
   const Vec3 approach = std::cos(was) * d - std::sin(was) * n, side = std::sin(was) * d + std::cos(was) * n;
-  const double turn = netTurnDeg(choice.flexible, choice.type, choice.angleDeg) * M_PI / 180;
+  const double turn = units::degToRad(netTurnDeg(choice.flexible, choice.type, choice.angleDeg));
   c.direction = std::cos(turn) * approach + std::sin(turn) * side;
   c.referenceNormal = -std::sin(turn) * approach + std::cos(turn) * side;
   if (!choice.flexible) {
@@ -94,7 +95,7 @@ void applyCatheter(const CatheterChoice& choice, io::DeploymentSpec& dep) {
   c.rest.angleDeg = choice.angleDeg;
   c.rest.radiusMm = choice.radiusMm;
   const double bends = choice.type == CatheterShape::Type::Straight ? 0.0
-                       : M_PI / 180 * choice.angleDeg * choice.radiusMm * (choice.type == CatheterShape::Type::S ? 2 : 1);
+                       : units::degToRad(choice.angleDeg) * choice.radiusMm * (choice.type == CatheterShape::Type::S ? 2 : 1);
   c.freeLengthMm = std::max(c.freeLengthMm, bends + 1.0);
   c.beams = std::max(c.beams, int(std::ceil((c.heldLengthMm + c.freeLengthMm) / 0.5)));
 }

@@ -104,8 +104,8 @@ nlohmann::ordered_json resultJson(const Model& model, const State& state, const 
     ordered_json r;
     r["packing_percent"] = 100 * c.packingDensity;
     r["coil_in_sac_mm"] = units::mToMm(c.coilLengthInSac);
-    r["coil_volume_mm3"] = units::mToMm(units::mToMm(units::mToMm(c.coilVolume)));
-    r["sac_volume_mm3"] = units::mToMm(units::mToMm(units::mToMm(c.sacVolume)));
+    r["coil_volume_mm3"] = units::m3ToMm3(c.coilVolume);
+    r["sac_volume_mm3"] = units::m3ToMm3(c.sacVolume);
     r["neck_coverage_percent"] = 100 * c.neckCoverage;
     r["protruding"] = c.protruding;
     r["protruding_length_mm"] = units::mToMm(c.protrudingLength);

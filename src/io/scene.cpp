@@ -23,7 +23,7 @@ std::string fmt(double v) {
 
 std::string rodPath(size_t i) { return "/rods/" + std::to_string(i); }
 
-void checkNode(const SceneSpec& s, const RodSpec& rod, const NodeRef& node, const std::string& path) {
+void checkNode(const SceneSpec& s, const RodSpecMm& rod, const NodeRef& node, const std::string& path) {
   if (!node.last && (node.index < 0 || node.index > rod.beams))
     fail(s, path,
          "node " + std::to_string(node.index) + " is out of range: rod \"" + rod.name + "\" has nodes 0.." +
@@ -41,7 +41,7 @@ void checkRestShape(const SceneSpec& s, const RestShapeSpec& rest, double length
              " mm; they must agree within 1 %");
 }
 
-void checkRod(const SceneSpec& s, const RodSpec& rod, size_t k) {
+void checkRod(const SceneSpec& s, const RodSpecMm& rod, size_t k) {
   const std::string at = rodPath(k);
   checkRestShape(s, rod.rest, rod.lengthMm, at);
   const PlacementSpec& p = rod.placement;
@@ -135,9 +135,9 @@ void checkScene(const SceneSpec& s) {
 namespace {
 
 // The physics description of a rod or of the deployment's coil (SI).
-::coilsim::RodSpec rodSpecOf(double lengthMm, const RestShapeSpec& r, const MaterialSpec& m, const SectionSpec& sec) {
+RodSpec rodSpecOf(double lengthMm, const RestShapeSpec& r, const MaterialSpec& m, const SectionSpec& sec) {
   using namespace units;
-  ::coilsim::RodSpec rod;
+  RodSpec rod;
   rod.length = mmToM(lengthMm);
   rod.rest.type = r.type;
   rod.rest.loopDiameter = mmToM(r.loopDiameterMm);
@@ -164,7 +164,7 @@ namespace {
   return rod;
 }
 
-RestCurve compileRest(const SceneSpec& s, const ::coilsim::RodSpec& rod, int beams, const std::string& at) {
+RestCurve compileRest(const SceneSpec& s, const RodSpec& rod, int beams, const std::string& at) {
   try {
     return makeRest(rod.rest, rod.length, beams);
   } catch (const std::exception& ex) {
@@ -182,7 +182,7 @@ DeploymentDef compileDeployment(const SceneSpec& s, const DeploymentSpec& d) {
   using namespace units;
   DeploymentDef def;
   def.coilName = d.coilName;
-  const ::coilsim::RodSpec coil = rodSpecOf(d.lengthMm, d.rest, d.material, d.section);
+  const RodSpec coil = rodSpecOf(d.lengthMm, d.rest, d.material, d.section);
   def.coilLength = coil.length;
   def.coilBeams = d.beams;
   def.coilRest = compileRest(s, coil, d.beams, "/deployment/coil");
@@ -238,11 +238,11 @@ ModelDef compileScene(const SceneSpec& s) {
     def.effects.push_back(use);
   }
   for (size_t k = 0; k < s.rods.size(); ++k) {
-    const RodSpec& r = s.rods[k];
+    const RodSpecMm& r = s.rods[k];
     RodDef d;
     d.name = r.name;
     d.role = r.role;
-    const ::coilsim::RodSpec rod = rodSpecOf(r.lengthMm, r.rest, r.material, r.section);
+    const RodSpec rod = rodSpecOf(r.lengthMm, r.rest, r.material, r.section);
     d.length = rod.length;
     d.beams = r.beams;
     d.rest = compileRest(s, rod, d.beams, rodPath(k));

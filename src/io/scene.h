@@ -72,7 +72,10 @@ struct LoadSpec {
   Vec3 momentNmm = Vec3::Zero();
 };
 
-struct RodSpec {
+// One rod of a scene file as the file gives it (millimetres, GPa, g/cm3,
+// its boundary conditions and loads); compileScene makes it the physics
+// RodSpec (physics/rod_spec.h, SI) and the model's rod.
+struct RodSpecMm {
   std::string name;
   RodRole role = RodRole::Coil;
   double lengthMm = 0;
@@ -143,7 +146,7 @@ struct SceneSpec {
   int loadSteps = 10;
   int maxNewtonIterations = 60;
   std::vector<EffectSpec> effects;
-  std::vector<RodSpec> rods;
+  std::vector<RodSpecMm> rods;
   std::optional<DeploymentSpec> deployment;  // rods of the deployment come after `rods`
   std::vector<ObstacleSpec> obstacles;       // walls (scene_obstacles.h)
   std::vector<std::string> warnings;  // harmless oddities found while reading (unused keys...)

@@ -119,10 +119,10 @@ LoadSpec readLoad(const JsonNode& n) {
   return l;
 }
 
-RodSpec readRod(const JsonNode& n) {
+RodSpecMm readRod(const JsonNode& n) {
   n.allowKeys({"name", "role", "length_mm", "beams", "rest_shape", "material", "section", "placement", "boundary",
                "loads"});
-  RodSpec r;
+  RodSpecMm r;
   r.name = n.child("name").string();
   if (auto role = n.optional("role")) {
     const std::string s = role->oneOf({"coil", "catheter", "wire"});

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "io/units.h"
 #include "physics/beam.h"
 #include "physics/integrator.h"
 
@@ -15,12 +16,12 @@ namespace {
 
 std::string mmText(double m) {
   char b[32];
-  std::snprintf(b, sizeof b, "%.1f mm", m * 1e3);
+  std::snprintf(b, sizeof b, "%.1f mm", units::mToMm(m));
   return b;
 }
 std::string mNText(double n) {
   char b[32];
-  std::snprintf(b, sizeof b, "%.2f mN", n * 1e3);
+  std::snprintf(b, sizeof b, "%.2f mN", units::nToMn(n));
   return b;
 }
 std::string sText(double s) {

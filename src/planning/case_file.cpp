@@ -134,7 +134,7 @@ PracticeCase parseCase(const nlohmann::json& document, const std::string& file) 
     g->allowKeys({"min_packing_density", "no_protrusion", "max_wall_force_mN", "detach_in_sac"});
     if (auto v = g->optional("min_packing_density")) c.goal.minPackingDensity = v->number(Bounds::closed(0, 1));
     if (auto v = g->optional("no_protrusion")) c.goal.noProtrusion = v->boolean();
-    if (auto v = g->optional("max_wall_force_mN")) c.goal.maxWallForce = 1e-3 * v->number(Bounds::positive());
+    if (auto v = g->optional("max_wall_force_mN")) c.goal.maxWallForce = units::mnToN(v->number(Bounds::positive()));
     if (auto v = g->optional("detach_in_sac")) c.goal.detachInSac = v->boolean();
   }
   if (auto s = root.optional("spacing_mm")) c.spacingMm = s->number(Bounds{0.05, 5, false, false, "mm"});

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/units.h"
 #include "planning/contact_forces.h"
 
 namespace coilsim::planning {
@@ -44,10 +45,10 @@ std::vector<LiveLine> LiveReadouts::lines(const Model& model, const State& state
 
   std::vector<LiveLine> out;
   out.push_back({"packing density", format("%.1f %%", 100 * metrics_.packingDensity), false});
-  out.push_back({"coil in the sac", format("%.1f mm", metrics_.coilLengthInSac * 1e3), false});
+  out.push_back({"coil in the sac", format("%.1f mm", units::mToMm(metrics_.coilLengthInSac)), false});
   out.push_back({"neck coverage", format("%.0f %%", 100 * metrics_.neckCoverage), false});
   if (metrics_.protruding)
-    out.push_back({"PROTRUSION", format("%.1f mm of coil through the neck", metrics_.protrudingLength * 1e3), true});
+    out.push_back({"PROTRUSION", format("%.1f mm of coil through the neck", units::mToMm(metrics_.protrudingLength)), true});
   else
     out.push_back({"protrusion", "none", false});
   if (!wallAvailable_) {
@@ -55,9 +56,9 @@ std::vector<LiveLine> LiveReadouts::lines(const Model& model, const State& state
   } else {
     const bool high = wallNow_ > threshold_;
     out.push_back({high ? "WALL LOAD" : "wall load",
-                   format("%.2f mN now", wallNow_ * 1e3) + format(" (limit %.0f mN)", threshold_ * 1e3), high});
-    out.push_back({"largest wall load", format("%.2f mN", wallMax_ * 1e3), wallMax_ > threshold_});
-    out.push_back({"wall load is", format("the largest node force lasting %.0f ms", kWallLoadWindow * 1e3), false});
+                   format("%.2f mN now", units::nToMn(wallNow_)) + format(" (limit %.0f mN)", units::nToMn(threshold_)), high});
+    out.push_back({"largest wall load", format("%.2f mN", units::nToMn(wallMax_)), wallMax_ > threshold_});
+    out.push_back({"wall load is", format("the largest node force lasting %.0f ms", units::sToMs(kWallLoadWindow)), false});
   }
   return out;
 }

@@ -23,11 +23,6 @@ using nlohmann::ordered_json;
 
 constexpr double kPictureCatheterMm = 4;  // drawn length of the rigid catheter in plan pictures
 
-// Edge units of plan reports, through units.h where it has them.
-double mm(double m) { return units::mToMm(m); }
-double mm3(double m3) { return units::mToMm(units::mToMm(units::mToMm(m3))); }
-double milliNewton(double n) { return n * 1e3; }  // mN: the unit clinical force papers report
-
 // Rounded for reports, so plans diff cleanly.
 double round6(double v) {
   if (!std::isfinite(v) || v == 0) return v;
@@ -210,10 +205,10 @@ ordered_json planJson(const PlanSetup& setup, const std::vector<CandidateResult>
   ordered_json plan;
   plan["format"] = "coilsim-plan/1";
   plan["scene"] = setup.label;
-  plan["sac_volume_mm3"] = round6(mm3(setup.sacVolume));
-  plan["neck_area_mm2"] = round6(mm(mm(setup.neck.area())));
-  plan["push_speed_mm_s"] = round6(mm(setup.deploy.pushSpeed));
-  plan["tip_force_threshold_mN"] = round6(milliNewton(setup.deploy.forceThreshold));
+  plan["sac_volume_mm3"] = round6(units::m3ToMm3(setup.sacVolume));
+  plan["neck_area_mm2"] = round6(units::m2ToMm2(setup.neck.area()));
+  plan["push_speed_mm_s"] = round6(units::mToMm(setup.deploy.pushSpeed));
+  plan["tip_force_threshold_mN"] = round6(units::nToMn(setup.deploy.forceThreshold));
   ordered_json coils = ordered_json::array();
   for (const CandidateResult& r : results) {
     ordered_json c;
@@ -223,23 +218,23 @@ ordered_json planJson(const PlanSetup& setup, const std::vector<CandidateResult>
     if (!r.ok) c["error"] = r.error;
     c["placed"] = r.ok && r.deploy.placed;
     if (!r.deploy.notPlaced.empty()) c["not_placed"] = r.deploy.notPlaced;
-    c["deployed_mm"] = round6(mm(r.deploy.deployed));
+    c["deployed_mm"] = round6(units::mToMm(r.deploy.deployed));
     c["packing_percent"] = round6(100 * r.sac.packingDensity);
-    c["sac_volume_mm3"] = round6(mm3(r.sac.sacVolume));
-    c["coil_volume_mm3"] = round6(mm3(r.sac.coilVolume));
-    c["coil_length_in_sac_mm"] = round6(mm(r.sac.coilLengthInSac));
+    c["sac_volume_mm3"] = round6(units::m3ToMm3(r.sac.sacVolume));
+    c["coil_volume_mm3"] = round6(units::m3ToMm3(r.sac.coilVolume));
+    c["coil_length_in_sac_mm"] = round6(units::mToMm(r.sac.coilLengthInSac));
     c["neck_coverage_percent"] = round6(100 * r.sac.neckCoverage);
     c["protruding"] = r.sac.protruding;
-    c["protruding_length_mm"] = round6(mm(r.sac.protrudingLength));
+    c["protruding_length_mm"] = round6(units::mToMm(r.sac.protrudingLength));
     // Without a contact effect there is no wall force to report: null, not 0.
     if (r.deploy.wallForcesAvailable) {
       // The sustained load (physics/contact/wall_load.h), as the window and the score sheet show it.
-      c["max_wall_force_mN"] = round6(milliNewton(r.deploy.wall.max));
-      c["wall_load_window_ms"] = kWallLoadWindow * 1e3;
-      c["mean_wall_force_mN"] = round6(milliNewton(r.deploy.wall.mean()));
-      c["peak_wall_force_mN"] = round6(milliNewton(r.deploy.wall.peak));
+      c["max_wall_force_mN"] = round6(units::nToMn(r.deploy.wall.max));
+      c["wall_load_window_ms"] = units::sToMs(kWallLoadWindow);
+      c["mean_wall_force_mN"] = round6(units::nToMn(r.deploy.wall.mean()));
+      c["peak_wall_force_mN"] = round6(units::nToMn(r.deploy.wall.peak));
       c["time_above_safety_s"] = round6(r.deploy.wall.timeAbove);
-      c["max_wall_penetration_um"] = round6(r.deploy.maxWallPenetration * 1e6);
+      c["max_wall_penetration_um"] = round6(units::mToUm(r.deploy.maxWallPenetration));
       c["max_wall_penetration_of_radius"] = round6(r.deploy.maxWallPenetrationOfRadius);
     } else {
       c["max_wall_force_mN"] = nullptr;
@@ -249,9 +244,9 @@ ordered_json planJson(const PlanSetup& setup, const std::vector<CandidateResult>
       c["max_wall_penetration_um"] = nullptr;
       c["max_wall_penetration_of_radius"] = nullptr;
     }
-    c["kickback_mm"] = round6(mm(r.deploy.maxKickback));
-    c["max_deployment_force_mN"] = round6(milliNewton(r.deploy.maxDeploymentForce));
-    c["max_tip_force_mN"] = round6(milliNewton(r.deploy.maxTipForce));
+    c["kickback_mm"] = round6(units::mToMm(r.deploy.maxKickback));
+    c["max_deployment_force_mN"] = round6(units::nToMn(r.deploy.maxDeploymentForce));
+    c["max_tip_force_mN"] = round6(units::nToMn(r.deploy.maxTipForce));
     c["corrections"] = r.deploy.corrections;
     c["pull_backs"] = r.deploy.pullBacks;
     c["occlusion_class"] = r.occlusion;

@@ -69,11 +69,11 @@ ordered_json scoreJson(const ScoreSheet& s) {
   j["occlusion_class"] = s.occlusion;
   j["protrusion_events"] = s.protrusionEvents;
   j["protruding_at_end"] = s.protrudingAtEnd;
-  j["wall_load_window_ms"] = kWallLoadWindow * 1e3;
+  j["wall_load_window_ms"] = units::sToMs(kWallLoadWindow);
   if (s.wallForcesAvailable) {
-    j["largest_wall_load_mN"] = s.maxWallForce * 1e3;  // N -> mN
+    j["largest_wall_load_mN"] = units::nToMn(s.maxWallForce);
     j["time_above_safety_s"] = s.timeAboveSafety;
-    j["max_wall_penetration_um"] = s.maxWallPenetration * 1e6;  // m -> um
+    j["max_wall_penetration_um"] = units::mToUm(s.maxWallPenetration);
     j["max_wall_penetration_of_radius"] = s.maxWallPenetrationOfRadius;
   } else {
     j["largest_wall_load_mN"] = nullptr;  // no wall contact in this run: unknown, not zero
@@ -81,7 +81,7 @@ ordered_json scoreJson(const ScoreSheet& s) {
     j["max_wall_penetration_um"] = nullptr;
     j["max_wall_penetration_of_radius"] = nullptr;
   }
-  j["max_tip_force_mN"] = s.maxTipForce * 1e3;
+  j["max_tip_force_mN"] = units::nToMn(s.maxTipForce);
   j["repositionings"] = s.repositionings;
   j["fluoroscopy_time_s"] = s.fluoroscopyTime;
   j["detached"] = s.detached;
@@ -89,7 +89,7 @@ ordered_json scoreJson(const ScoreSheet& s) {
   ordered_json goal;
   goal["min_packing_percent"] = 100 * s.goal.minPackingDensity;
   goal["no_protrusion"] = s.goal.noProtrusion;
-  goal["max_wall_load_mN"] = s.goal.maxWallForce * 1e3;
+  goal["max_wall_load_mN"] = units::nToMn(s.goal.maxWallForce);
   goal["detach_in_sac"] = s.goal.detachInSac;
   j["goal"] = goal;
   j["goal_met"] = s.goalMet;
@@ -200,8 +200,8 @@ ScoreSheet SessionScorer::finish(const Model& model, const State& state) const {
     s.goalMissed.push_back("the coil protruded through the neck " + std::to_string(s.protrusionEvents) + " time(s)" +
                            (s.protrudingAtEnd ? ", and does at the end" : ""));
   if (s.wallForcesAvailable && s.maxWallForce > g.maxWallForce) {
-    std::snprintf(b, sizeof b, "the wall load reached %.1f mN (limit %.0f mN)", 1e3 * s.maxWallForce,
-                  1e3 * g.maxWallForce);
+    std::snprintf(b, sizeof b, "the wall load reached %.1f mN (limit %.0f mN)", units::nToMn(s.maxWallForce),
+                  units::nToMn(g.maxWallForce));
     s.goalMissed.push_back(b);
   }
   if (g.detachInSac && !s.detachInSac)

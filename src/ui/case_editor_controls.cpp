@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/units.h"
+
 namespace coilsim::ui {
 namespace {
 
@@ -86,7 +88,7 @@ void CaseEditorControls::key(EditorKey k, EditorMods mods) {
     if (!hooks_.tiltNeck) return;
     char what[64];
     std::snprintf(what, sizeof what, "neck plane tilted %+.0f deg", deg);
-    outcome(what, hooks_.tiltNeck(axis, deg * M_PI / 180.0));
+    outcome(what, hooks_.tiltNeck(axis, units::degToRad(deg)));
   };
   switch (k) {
     case EditorKey::Up: neck(kNeckKeyStepMm); break;

@@ -10,15 +10,14 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <memory>
 #include <optional>
 #include <vector>
 
-#include "render/backend.h"
 #include "render/gl_loader.h"
 #include "render/image.h"
 #include "render/renderer.h"
 #include "ui/case_editor_controls.h"
+#include "ui/glfw_window.h"
 #include "ui/imgui_layer.h"
 #include "ui/realtime.h"
 #include "ui/offscreen_context.h"
@@ -174,9 +173,9 @@ void drawPanel(CaseEditorControls& c, int sidebar, int height) {
 }
 
 struct Frame {
-  render::Renderer renderer;
-  ImGuiLayer imgui;
-  render::RenderSettings settings;
+  render::Renderer& renderer;
+  ImGuiLayer& imgui;
+  render::RenderSettings settings{};
 };
 
 bool drawFrame(Frame& f, CaseEditorControls& c, int width, int height, double dt, std::string& error) {
@@ -210,20 +209,16 @@ void printView(const CaseEditorControls& c, int side, int width, int height) {
 }  // namespace
 
 int runCaseEditorWindow(const CaseEditorHooks& hooks, const CaseEditorWindowOptions& o) {
-  std::string error;
   render::BackendOptions bo;
   bo.width = o.width, bo.height = o.height;
   bo.title = "coilsim case edit - " + hooks.title;
-  auto backend = render::createBackend("glfw", bo, error);
-  if (!backend) {
-    std::fprintf(stderr, "coilsim: %s\n", error.c_str());
-    return 1;
-  }
-  GLFWwindow* window = static_cast<GLFWwindow*>(backend->nativeWindow());
+  const auto win = GlfwWindow::open(bo);
+  if (!win) return 1;
+  GLFWwindow* window = win->handle();
   Queue queue;
   int ww = 0, wh = 0;
-  glfwGetWindowSize(window, &ww, &wh);
-  queue.scale = ww > 0 ? double(backend->framebufferWidth()) / ww : 1.0;
+  win->windowSize(ww, wh);
+  queue.scale = ww > 0 ? double(win->framebufferWidth()) / ww : 1.0;
   glfwGetCursorPos(window, &queue.x, &queue.y);
   queue.x *= queue.scale, queue.y *= queue.scale;
   // Our callbacks first: ImGui's GLFW backend chains to them.
@@ -232,13 +227,11 @@ int runCaseEditorWindow(const CaseEditorHooks& hooks, const CaseEditorWindowOpti
   glfwSetMouseButtonCallback(window, onButton);
   glfwSetCursorPosCallback(window, onMove);
   glfwSetScrollCallback(window, onScroll);
-  auto f = std::make_unique<Frame>();
-  f->settings.samples = render::softwareRenderer() ? 0 : 4;
-  if (!f->renderer.init(error) || !f->imgui.init(window, error)) {
-    std::fprintf(stderr, "coilsim: %s\n", error.c_str());
-    return 1;
-  }
+  if (!win->attachImGui()) return 1;
+  Frame f{win->renderer(), win->imgui()};
+  f.settings.samples = render::softwareRenderer() ? 0 : 4;
   CaseEditorControls c(hooks);
+  std::string error;
   int exitCode = 0;
   double last = wallSeconds();
   bool told = false;
@@ -250,19 +243,19 @@ int runCaseEditorWindow(const CaseEditorHooks& hooks, const CaseEditorWindowOpti
     }
     const double now = wallSeconds(), dt = now - last;
     last = now;
-    const int fbw = backend->framebufferWidth(), fbh = backend->framebufferHeight();
+    const int fbw = win->framebufferWidth(), fbh = win->framebufferHeight();
     if (fbw <= 0 || fbh <= 0) {
       glfwWaitEventsTimeout(0.05);
       continue;
     }
     c.setArea(sidebarOf(fbw), 0, fbw - sidebarOf(fbw), fbh);
     handOver(queue, c, ImGui::GetIO().WantCaptureMouse);
-    if (!drawFrame(*f, c, fbw, fbh, dt, error)) {
+    if (!drawFrame(f, c, fbw, fbh, dt, error)) {
       std::fprintf(stderr, "coilsim: %s\n", error.c_str());
       exitCode = 1;
       break;
     }
-    f->renderer.present(fbw, fbh);
+    f.renderer.present(fbw, fbh);
     if (!told) printView(c, sidebarOf(fbw), fbw, fbh), told = true;
     if (c.closing() && !o.screenshotPath.empty()) {
       render::Image image;
@@ -272,7 +265,7 @@ int runCaseEditorWindow(const CaseEditorHooks& hooks, const CaseEditorWindowOpti
         exitCode = 1;
       }
     }
-    backend->present();
+    win->present();
     if (c.closing()) break;
   }
   return exitCode;
@@ -281,14 +274,16 @@ int runCaseEditorWindow(const CaseEditorHooks& hooks, const CaseEditorWindowOpti
 bool renderCaseEditorOffscreen(const CaseEditorHooks& hooks, const CaseEditorWindowOptions& o, std::string& error) {
   const auto backend = offscreenContext(o.screenshotPath, o.width, o.height, error);
   if (!backend) return false;
-  auto f = std::make_unique<Frame>();
-  if (!f->renderer.init(error) || !f->imgui.init(nullptr, error)) return false;
+  render::Renderer renderer;
+  ImGuiLayer imgui;
+  if (!renderer.init(error) || !imgui.init(nullptr, error)) return false;
+  Frame f{renderer, imgui};
   CaseEditorControls c(hooks);
   // ImGui sizes tables and auto-fitting items on their first frame: two frames.
   for (int k = 0; k < 2; ++k)
-    if (!drawFrame(*f, c, o.width, o.height, 1.0 / 60.0, error)) return false;
+    if (!drawFrame(f, c, o.width, o.height, 1.0 / 60.0, error)) return false;
   render::Image image;
-  return readBackFrame(f->renderer, image, error) && writePicture(image, o.screenshotPath, error);
+  return readBackFrame(renderer, image, error) && writePicture(image, o.screenshotPath, error);
 }
 
 }  // namespace coilsim::ui

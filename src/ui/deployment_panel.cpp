@@ -56,8 +56,8 @@ void readOuts(const Session& session, PanelContext& ctx) {
   if (!c.available)
     ImGui::TextDisabled("wall load: this build has no contact forces");
   else
-    ImGui::Text("wall load %.3f mN, largest %.3f mN (lasting 5 ms; %d contacts)", 1e3 * c.wallLoad,
-                1e3 * c.wallLoadMax, c.contacts);
+    ImGui::Text("wall load %.3f mN, largest %.3f mN (lasting 5 ms; %d contacts)", units::nToMn(c.wallLoad),
+                units::nToMn(c.wallLoadMax), c.contacts);
   if (session.timelineSize() > 0)
     ImGui::TextDisabled("timeline: %zu of %zu commands started", session.timelineCursor(), session.timelineSize());
 }

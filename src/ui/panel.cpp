@@ -57,9 +57,9 @@ void simulationSection(Session& session, PanelContext& ctx) {
   const State& s = session.state();
   ImGui::Text("simulated time  %.4f s", s.time);
   const double meanStep = s.stats.steps ? s.stats.totalStepSeconds / double(s.stats.steps) : 0.0;
-  ImGui::Text("time step       %.3g ms", 1e3 * session.model().timeStep);
-  ImGui::Text("step time       %.3f ms", 1e3 * s.stats.lastStepSeconds);
-  ImGui::Text("  mean / max    %.3f / %.3f ms", 1e3 * meanStep, 1e3 * s.stats.maxStepSeconds);
+  ImGui::Text("time step       %.3g ms", units::sToMs(session.model().timeStep));
+  ImGui::Text("step time       %.3f ms", units::sToMs(s.stats.lastStepSeconds));
+  ImGui::Text("  mean / max    %.3f / %.3f ms", units::sToMs(meanStep), units::sToMs(s.stats.maxStepSeconds));
   if (ctx.interactive) {
     if (session.playing()) {
       ImGui::Text("real-time factor %.2fx", session.loop().realTimeFactor());
@@ -70,8 +70,8 @@ void simulationSection(Session& session, PanelContext& ctx) {
       ImGui::TextDisabled("real-time factor (paused)");
     }
     if (ctx.frameSeconds > 0)
-      ImGui::Text("frame %.1f ms (%.0f fps), drawing %.1f ms", 1e3 * ctx.frameSeconds, 1.0 / ctx.frameSeconds,
-                  1e3 * ctx.renderSeconds);
+      ImGui::Text("frame %.1f ms (%.0f fps), drawing %.1f ms", units::sToMs(ctx.frameSeconds), 1.0 / ctx.frameSeconds,
+                  units::sToMs(ctx.renderSeconds));
   } else {
     ImGui::TextDisabled("off-screen snapshot");
   }

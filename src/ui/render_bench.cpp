@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "io/units.h"
 #include "render/backend.h"
 #include "render/gl_loader.h"
 #include "ui/frame.h"
@@ -53,7 +54,7 @@ bool benchRender(const Model& model, const State& state, const RenderBenchOption
       const double t0 = seconds();
       if (!drawFrame(parts, o.width, o.height, 1.0 / 60.0, error)) return false;
       renderer.finish();
-      if (i >= o.warmupFrames) ms += 1e3 * (seconds() - t0);
+      if (i >= o.warmupFrames) ms += units::sToMs(seconds() - t0);
     }
     ms /= o.frames;
     fps = 1e3 / ms;
@@ -79,8 +80,8 @@ bool benchRender(const Model& model, const State& state, const RenderBenchOption
     physics += t1 - t0;
     drawing += seconds() - t1;
   }
-  result.physicsMsPerFrame = 1e3 * physics / o.frames;
-  result.renderMsPerFrame = 1e3 * drawing / o.frames;
+  result.physicsMsPerFrame = units::sToMs(physics) / o.frames;
+  result.renderMsPerFrame = units::sToMs(drawing) / o.frames;
   const double total = physics + drawing;
   result.physicsShare = total > 0 ? physics / total : 0;
   result.renderShare = total > 0 ? drawing / total : 0;

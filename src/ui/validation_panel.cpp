@@ -12,15 +12,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <memory>
 #include <mutex>
 #include <optional>
 #include <thread>
 #include <utility>
 
-#include "render/backend.h"
 #include "render/image.h"
 #include "render/renderer.h"
+#include "ui/glfw_window.h"
 #include "ui/help_overlay.h"
 #include "ui/imgui_layer.h"
 #include "ui/layout_dump.h"
@@ -321,10 +320,10 @@ void Workbench::draw(int sidebarWidth, int width, int height) {
 }
 
 struct Frame {
-  render::Renderer renderer;
-  ImGuiLayer imgui;
-  Views views;
-  render::RenderSettings settings;
+  render::Renderer& renderer;
+  ImGuiLayer& imgui;
+  Views views{};
+  render::RenderSettings settings{};
 };
 
 int sidebarOf(int width) { return std::min(std::max(int(0.42 * width), 420), 620); }
@@ -371,16 +370,12 @@ bool writeImage(const render::Image& image, const std::string& path, std::string
 }  // namespace
 
 int runValidationWindow(const ValidationHooks& hooks, const ValidationWindowOptions& o) {
-  std::string error;
   render::BackendOptions bo;
   bo.width = o.width, bo.height = o.height;
   bo.title = "coilsim validate - " + hooks.title;
-  auto backend = render::createBackend("glfw", bo, error);
-  if (!backend) {
-    std::fprintf(stderr, "coilsim: %s\n", error.c_str());
-    return 1;
-  }
-  GLFWwindow* window = static_cast<GLFWwindow*>(backend->nativeWindow());
+  const auto win = GlfwWindow::open(bo);
+  if (!win) return 1;
+  GLFWwindow* window = win->handle();
   Workbench w(hooks);
   LayoutDump layout(LayoutDump::pathFromEnvironment());
   if (layout.enabled()) w.setLayout(&layout);
@@ -390,11 +385,9 @@ int runValidationWindow(const ValidationHooks& hooks, const ValidationWindowOpti
   glfwSetKeyCallback(window, [](GLFWwindow* win, int key, int, int action, int mods) {
     if (action == GLFW_PRESS) static_cast<Workbench*>(glfwGetWindowUserPointer(win))->onKey(key, mods);
   });
-  auto f = std::make_unique<Frame>();
-  if (!f->renderer.init(error) || !f->imgui.init(window, error)) {
-    std::fprintf(stderr, "coilsim: %s\n", error.c_str());
-    return 1;
-  }
+  if (!win->attachImGui()) return 1;
+  Frame f{win->renderer(), win->imgui()};
+  std::string error;
   if (!applyScript(w, o, error)) {
     std::fprintf(stderr, "coilsim: %s\n", error.c_str());
     return 2;
@@ -408,15 +401,15 @@ int runValidationWindow(const ValidationHooks& hooks, const ValidationWindowOpti
     const double now = wallSeconds(), dt = now - last;
     last = now;
     w.poll();
-    const int fbw = backend->framebufferWidth(), fbh = backend->framebufferHeight();
+    const int fbw = win->framebufferWidth(), fbh = win->framebufferHeight();
     if (fbw <= 0 || fbh <= 0) {
       glfwWaitEventsTimeout(0.05);
       continue;
     }
     int ww = 0, wh = 0;
-    glfwGetWindowSize(window, &ww, &wh);
+    win->windowSize(ww, wh);
     layout.begin(float(ww), float(wh));
-    if (!drawFrame(*f, w, fbw, fbh, dt, error)) {
+    if (!drawFrame(f, w, fbw, fbh, dt, error)) {
       std::fprintf(stderr, "coilsim: %s\n", error.c_str());
       exitCode = 1;
       break;
@@ -426,8 +419,8 @@ int runValidationWindow(const ValidationHooks& hooks, const ValidationWindowOpti
       layout = LayoutDump("");  // said once; the window goes on
       w.setLayout(nullptr);
     }
-    steerCamera(*f, sidebarOf(fbw));
-    f->renderer.present(fbw, fbh);
+    steerCamera(f, sidebarOf(fbw));
+    f.renderer.present(fbw, fbh);
     // A scripted run closes two frames after its fit (ImGui lays a new table out once).
     if (scripted && !w.fitting() && (!o.autoFit || w.fits() > 0) && ++framesAfterFit > 2) {
       render::Image image;
@@ -444,7 +437,7 @@ int runValidationWindow(const ValidationHooks& hooks, const ValidationWindowOpti
       exitCode = 1;
       glfwSetWindowShouldClose(window, 1);
     }
-    backend->present();
+    win->present();
   }
   return exitCode;
 }
@@ -452,8 +445,10 @@ int runValidationWindow(const ValidationHooks& hooks, const ValidationWindowOpti
 bool renderValidationOffscreen(const ValidationHooks& hooks, const ValidationWindowOptions& o, std::string& error) {
   const auto backend = offscreenContext(o.screenshotPath, o.width, o.height, error);
   if (!backend) return false;
-  auto f = std::make_unique<Frame>();
-  if (!f->renderer.init(error) || !f->imgui.init(nullptr, error)) return false;
+  render::Renderer renderer;
+  ImGuiLayer imgui;
+  if (!renderer.init(error) || !imgui.init(nullptr, error)) return false;
+  Frame f{renderer, imgui};
   Workbench w(hooks);
   LayoutDump layout(LayoutDump::pathFromEnvironment());
   if (layout.enabled()) w.setLayout(&layout);
@@ -463,11 +458,11 @@ bool renderValidationOffscreen(const ValidationHooks& hooks, const ValidationWin
   // ImGui sizes tables and auto-fitting items on their first frame: two frames.
   for (int k = 0; k < 2; ++k) {
     layout.begin(float(o.width), float(o.height));
-    if (!drawFrame(*f, w, o.width, o.height, 1.0 / 60.0, error)) return false;
+    if (!drawFrame(f, w, o.width, o.height, 1.0 / 60.0, error)) return false;
   }
   if (!layout.write(error)) return false;
   render::Image image;
-  if (!readBackFrame(f->renderer, image, error) || !writeImage(image, o.screenshotPath, error)) return false;
+  if (!readBackFrame(renderer, image, error) || !writeImage(image, o.screenshotPath, error)) return false;
   if (!w.after().ok) {
     error = "the fit failed: " + w.after().message;
     return false;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "io/units.h"
+
 namespace coilsim::ui {
 
 void Views::fitIfNew(const render::Bounds& bounds, int width, int height) {
@@ -18,7 +20,7 @@ void Views::fit(const render::Bounds& bounds, int width, int height) {
 }
 
 // The AP camera sits at yaw -90 degrees.
-double Views::rotationDeg() const { return std::remainder(xray_.yaw + 0.5 * M_PI, 2 * M_PI) * 180.0 / M_PI; }
-double Views::angulationDeg() const { return xray_.pitch * 180.0 / M_PI; }
+double Views::rotationDeg() const { return units::radToDeg(std::remainder(xray_.yaw + 0.5 * M_PI, 2 * M_PI)); }
+double Views::angulationDeg() const { return units::radToDeg(xray_.pitch); }
 
 }  // namespace coilsim::ui

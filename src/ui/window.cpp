@@ -8,10 +8,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "render/backend.h"
 #include "render/gl_loader.h"
 #include "render/image.h"
 #include "ui/frame.h"
+#include "ui/glfw_window.h"
 #include "ui/input.h"
 #include "ui/layout_dump.h"
 #include "ui/realtime.h"
@@ -43,23 +43,14 @@ int runWindow(Model& model, State& state, const ViewerOptions& options) {
     std::fprintf(stderr, "coilsim: unknown view '%s' (expected 3d, xray or biplane)\n", options.view.c_str());
     return 2;
   }
-  std::string error;
   render::BackendOptions bo;
   bo.width = options.width;
   bo.height = options.height;
   bo.vsync = options.vsync;
   bo.title = options.scenePath.empty() ? "coilsim" : "coilsim - " + options.scenePath;
-  auto backend = render::createBackend("glfw", bo, error);
-  if (!backend) {
-    std::fprintf(stderr, "coilsim: %s\n", error.c_str());
-    return 1;
-  }
-  GLFWwindow* window = static_cast<GLFWwindow*>(backend->nativeWindow());
-  render::Renderer renderer;
-  if (!renderer.init(error)) {
-    std::fprintf(stderr, "coilsim: %s\n", error.c_str());
-    return 1;
-  }
+  const auto win = GlfwWindow::open(bo);
+  if (!win) return 1;
+  GLFWwindow* window = win->handle();
 
   Session session(model, state, options.addDrawData);
   session.setTimeline(options.timeline);
@@ -90,12 +81,9 @@ int runWindow(Model& model, State& state, const ViewerOptions& options) {
 
   // Our callbacks first: ImGui's GLFW backend chains to them.
   WindowInput input(window, session, views, panel);
-  ImGuiLayer imgui;
-  if (!imgui.init(window, error)) {
-    std::fprintf(stderr, "coilsim: %s\n", error.c_str());
-    return 1;
-  }
-  FrameParts parts{renderer, imgui, session, views, panel, settings, true};
+  if (!win->attachImGui()) return 1;
+  ImGuiLayer& imgui = win->imgui();
+  FrameParts parts{win->renderer(), imgui, session, views, panel, settings, true};
 
   const bool scripted = options.runSeconds >= 0;
   session.setPlaying(scripted || !options.startPaused);
@@ -103,6 +91,7 @@ int runWindow(Model& model, State& state, const ViewerOptions& options) {
   const double wallLimit = scripted ? 60.0 + 20.0 * options.runSeconds : 0.0;
   const double start = wallSeconds();
   double last = start;
+  std::string error;
   int exitCode = 0;
   bool closing = false;
   while (!closing) {
@@ -110,7 +99,7 @@ int runWindow(Model& model, State& state, const ViewerOptions& options) {
     const double now = wallSeconds();
     const double dt = now - last;
     last = now;
-    const int fbw = backend->framebufferWidth(), fbh = backend->framebufferHeight();
+    const int fbw = win->framebufferWidth(), fbh = win->framebufferHeight();
     input.update(dt, imgui.wantsMouse(), imgui.wantsKeyboard());
     userView();
 
@@ -139,7 +128,7 @@ int runWindow(Model& model, State& state, const ViewerOptions& options) {
     }
     const double drawStart = wallSeconds();
     int ww = 0, wh = 0;
-    glfwGetWindowSize(window, &ww, &wh);
+    win->windowSize(ww, wh);
     layout.begin(float(ww), float(wh));
     if (!drawFrame(parts, fbw, fbh, dt, error)) {
       std::fprintf(stderr, "coilsim: %s\n", error.c_str());
@@ -151,7 +140,7 @@ int runWindow(Model& model, State& state, const ViewerOptions& options) {
       layout = LayoutDump("");  // said once; the window goes on
       panel.layout = nullptr;
     }
-    renderer.present(fbw, fbh);
+    win->renderer().present(fbw, fbh);
     userView();
     if (setup && panel.setupRequested) {
       panel.setupRequested = false;
@@ -167,7 +156,7 @@ int runWindow(Model& model, State& state, const ViewerOptions& options) {
     }
     if (closing && !options.windowScreenshotPath.empty() && !writeWindowShot(fbw, fbh, options.windowScreenshotPath))
       exitCode = 1;
-    backend->present();
+    win->present();
   }
   model = session.model();
   state = session.state();

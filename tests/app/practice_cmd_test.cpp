@@ -1,12 +1,10 @@
 // `coilsim practice --size WxH`, tested by running the real binary: a bad
-// size is refused (exit 2) with run's wording, before any session starts;
-// a good one sizes the picture (the reference: the PNG's own header).
+// size is refused (exit 2) with run's wording, before any session starts.
+// That a good one sizes the picture: practice_window_test.cpp (a build with
+// the ui layer).
 #include <gtest/gtest.h>
 
-#include <cstdint>
-#include <fstream>
 #include <string>
-#include <utility>
 
 #include "app/run_binary.h"
 
@@ -14,15 +12,6 @@ namespace apptest {
 namespace {
 
 const std::string kCase = kSource + "/scenes/cases/sphere-7mm-wide-neck.json";
-
-// Width and height from a PNG's IHDR chunk (bytes 16-23, big-endian).
-std::pair<long, long> pngSize(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  unsigned char b[24] = {};
-  in.read(reinterpret_cast<char*>(b), sizeof b);
-  auto be = [&](int at) { return long(b[at]) << 24 | long(b[at + 1]) << 16 | long(b[at + 2]) << 8 | long(b[at + 3]); };
-  return {be(16), be(20)};
-}
 
 // The line of stderr that says what --size needed.
 std::string sizeComplaint(const std::string& err) {
@@ -56,20 +45,6 @@ TEST(PracticeCommand, HelpListsSize) {
   EXPECT_CONTAINS(h.out, "--size WxH");
   EXPECT_CONTAINS(h.out, "--window [--coil NAME]");
 }
-
-#ifdef COILSIM_HAVE_UI
-TEST(PracticeCommand, SizeSizesTheScreenshot) {
-  const fs::path dir = scratch("practice_size_shot");
-  std::ofstream(dir / "push.json")
-      << R"({"format": "coilsim-timeline/1", "commands": [{"t_s": 0, "push": {"speed_mm_s": 10, "distance_mm": 1}}]})";
-  const Exec r = coilsim({"practice", kCase, "--input", (dir / "push.json").string(), "--duration", "0.1",
-                          "--screenshot", (dir / "p.png").string(), "--size", "320x200", "--out",
-                          (dir / "score.json").string()},
-                         dir);
-  ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(pngSize(dir / "p.png"), std::make_pair(320L, 200L));
-}
-#endif
 
 }  // namespace
 }  // namespace apptest

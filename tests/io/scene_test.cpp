@@ -61,7 +61,7 @@ TEST(Scene, ParsesTheSmallScene) {
   EXPECT_EQ(s.name, "small");
   EXPECT_EQ(s.solve, SolveMode::Dynamic);
   ASSERT_EQ(s.rods.size(), 1u);
-  const RodSpec& r = s.rods[0];
+  const RodSpecMm& r = s.rods[0];
   EXPECT_EQ(r.beams, 10);
   EXPECT_TRUE(r.boundary[1].node.last);
   EXPECT_EQ(r.boundary[1].node.resolve(r.beams), 10);

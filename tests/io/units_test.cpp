@@ -33,5 +33,26 @@ TEST(Units, AnglesMomentsAndRates) {
   EXPECT_DOUBLE_EQ(degPerMmToRadPerM(1.0), 1000.0 * M_PI / 180.0);
 }
 
+// The display units against their SI definitions: 1 mm2 = 1e-6 m2,
+// 1 mm3 = 1e-9 m3, 1 um = 1e-6 m, 1 mN = 1e-3 N, 1 ms = 1e-3 s.
+TEST(Units, ReportUnitsAgainstTheirSiDefinitions) {
+  EXPECT_DOUBLE_EQ(m2ToMm2(1e-6), 1.0);
+  EXPECT_DOUBLE_EQ(m2ToMm2(2.5e-5), 25.0);
+  EXPECT_DOUBLE_EQ(m3ToMm3(1e-9), 1.0);
+  EXPECT_DOUBLE_EQ(m3ToMm3(4.0 / 3.0 * M_PI * 3.5e-3 * 3.5e-3 * 3.5e-3), 4.0 / 3.0 * M_PI * 3.5 * 3.5 * 3.5);
+  EXPECT_DOUBLE_EQ(mToUm(1e-6), 1.0);
+  EXPECT_DOUBLE_EQ(mToUm(0.1e-3), 100.0);
+  EXPECT_DOUBLE_EQ(nToMn(1e-3), 1.0);
+  EXPECT_DOUBLE_EQ(nToMn(0.25), 250.0);
+  EXPECT_DOUBLE_EQ(mnToN(1.0), 1e-3);
+  EXPECT_DOUBLE_EQ(mnToN(100.0), 0.1);
+  EXPECT_DOUBLE_EQ(sToMs(1e-3), 1.0);
+  EXPECT_DOUBLE_EQ(sToMs(0.005), 5.0);
+  // Each pair inverts: an area and a volume are lengths squared and cubed.
+  EXPECT_DOUBLE_EQ(mm2ToM2(m2ToMm2(3e-6)), 3e-6);
+  EXPECT_DOUBLE_EQ(m3ToMm3(mmToM(2.0) * mmToM(3.0) * mmToM(4.0)), 24.0);
+  EXPECT_DOUBLE_EQ(mnToN(nToMn(0.0123)), 0.0123);
+}
+
 }  // namespace
 }  // namespace coilsim::units
