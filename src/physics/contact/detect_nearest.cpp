@@ -57,12 +57,12 @@ NearestTriangle nearestWallFeature(const ObstacleTree& tree, const Vec3& a, cons
     boxGap2[k] = boxDistance2(lo, hi, p.cwiseMin(q).cwiseMin(r), p.cwiseMax(q).cwiseMax(r));
     if (best.triangle >= 0 || known < INFINITY) {
       // Two lower bounds of the distance, the boxes' and the triangle's
-      // sphere's (which also prunes across a diagonal segment's box); the
-      // larger is kept for the passes that read boxGap2.
+      // plane and disc's (which also prunes under a segment lying over the
+      // wall); the larger is kept for the passes that read boxGap2.
       bool far = boxGap2[k] > bound * bound;
       if (!far) {
-        const double sphere = tree.distanceBound(candidates[k], a, b);
-        if (sphere > bound) far = true, boxGap2[k] = std::max(boxGap2[k], sphere * sphere);
+        const double lower = tree.distanceBound(candidates[k], a, b);
+        if (lower > bound) far = true, boxGap2[k] = std::max(boxGap2[k], lower * lower);
       }
       if (far) {
         hits[k].distance = std::numeric_limits<double>::quiet_NaN();

@@ -19,14 +19,14 @@ struct NearestTriangle {
 
 // The nearest triangle feature to segment [a, b] among those whose boxes
 // overlap the segment's box grown by `reach`. A triangle whose own box is
-// farther from the segment's box, or whose sphere (ObstacleTree::
-// distanceBound) is farther from the segment, than the best distance found
+// farther from the segment's box, or whose plane and disc (ObstacleTree::
+// distanceBound) are farther from the segment, than the best distance found
 // so far cannot be nearer and is skipped without the exact query. Leaves in
 // `scratch` the candidates, their closest points to the segment (hits, kept
 // for the concave-neighbour pass; NaN distance where a triangle was
 // skipped) and the square of a lower bound of the distance from any point
-// of the segment (boxGap2: the boxes' gap, or the sphere's bound where
-// that skipped the triangle).
+// of the segment (boxGap2: the boxes' gap, or the plane and disc's bound
+// where that skipped the triangle).
 // The result is the first nearest candidate in the tree's order, exactly
 // what measuring every candidate gives (tests/physics/contact/
 // detect_nearest_test.cpp); a null `triangle` when there is no candidate.

@@ -182,7 +182,7 @@ void detectWallContacts(const Model& model, State& state, double h, double margi
             ContactPoint probe;
             probe.segment = e, probe.other = int(o);
             if (!findPrevious(rc.previous, probe, r)) continue;
-            n = nearestWallFeature(tree, a, b, 4 * radius + margin, scratch, 4 * radius + margin);
+            n = nearestWallFeature(tree, a, b, 4 * radius + margin, scratch, 4 * radius + margin, -1, cache);
             if (n.triangle < 0) continue;
           }
           const size_t listed = rc.wall.size();

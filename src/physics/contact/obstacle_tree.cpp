@@ -95,13 +95,25 @@ void ObstacleTree::overlapping(const Vec3& lo, const Vec3& hi, double slack, Tri
 }
 
 double ObstacleTree::distanceBound(int t, const Vec3& a, const Vec3& b) const {
+  // Split a point's offset from the triangle into the part along the
+  // normal and the part in its plane: the first is at least the lower end's
+  // height over the plane (0 if the segment crosses it), the second at
+  // least the distance of the segment's shadow on the plane from the disc
+  // around the centroid through the farthest vertex, which holds the
+  // triangle. Tight under a segment lying over a flat wall, where only the
+  // triangles its shadow meets are left to measure.
   const Vec3& c = centroids_[t];
-  const Vec3 ab = b - a;
+  const Vec3& n = normals_[t];  // zero for a degenerate triangle: the sphere's bound
+  const double ha = n.dot(a - c), hb = n.dot(b - c);
+  const double height = ha * hb > 0 ? std::min(std::abs(ha), std::abs(hb)) : 0.0;
+  const Vec3 pa = a - ha * n, ab = (b - hb * n) - pa;
   const double length2 = ab.squaredNorm();
-  const double s = length2 > 0 ? std::clamp((c - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  const double s = length2 > 0 ? std::clamp((c - pa).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  const double across = std::max(0.0, (pa + s * ab - c).norm() - spheres_[t]);
   // Round-off in these few operations is about 1e-16 of the coordinates
-  // (metres); the sphere is taken a millionth and a picometre larger.
-  return (a + s * ab - c).norm() - (1 + 1e-6) * spheres_[t] - 1e-12;
+  // (metres); the bound is made a millionth of the disc and a picometre
+  // smaller.
+  return std::sqrt(height * height + across * across) - 1e-6 * spheres_[t] - 1e-12;
 }
 
 std::vector<std::shared_ptr<const ObstacleTree>> buildObstacleTrees(const std::vector<Obstacle>& obstacles) {

@@ -38,8 +38,9 @@ class ObstacleTree {
   void overlapping(const Vec3& lo, const Vec3& hi, double slack, TriangleCache& cache, std::vector<int>& stack,
                    std::vector<int>& out) const;
   // A lower bound of the distance from any point of segment [a, b] to
-  // triangle t: from the sphere around the triangle's centroid through its
-  // farthest vertex, made smaller by far more than round-off, so that a
+  // triangle t: the segment's height over the triangle's plane and its
+  // shadow's distance from the disc around the triangle's centroid through
+  // its farthest vertex, made smaller by far more than round-off, so that a
   // query may skip the triangle when this exceeds what it has found.
   double distanceBound(int t, const Vec3& a, const Vec3& b) const;
 

@@ -1,6 +1,6 @@
 // The wall's nearest-feature query (physics/contact/detect_nearest.h) with
 // its shortcuts (the segment's cached walk of the tree, the last nearest
-// triangle as a hint, the spheres' distance bound) against the plain query
+// triangle as a hint, the triangles' distance bound) against the plain query
 // it must equal: the collision tree walked for the segment's box (checked
 // against a brute-force scan in contact_wall_test.cpp) and every candidate
 // measured by the exact segment-triangle distance, the first nearest in the
@@ -71,6 +71,36 @@ void expectSame(const NearestTriangle& fast, const std::vector<int>& candidates,
   ASSERT_EQ(fast.hit.s, ref.nearest.hit.s) << where;
   ASSERT_EQ(fast.hit.onTriangle, ref.nearest.hit.onTriangle) << where;
   ASSERT_EQ(fast.hit.onSegment, ref.nearest.hit.onSegment) << where;
+}
+
+// The bound by which a query skips a triangle is below the exact distance
+// (closestSegmentTriangle, itself checked against dense sampling in
+// contact_wall_test.cpp) for segments of every orientation near and across
+// the surface, and tight under a segment lying flat over the wall.
+TEST(WallNearestFeatureTest, DistanceBoundNeverExceedsTheExactDistance) {
+  const ObstacleTree tree(std::make_shared<const TriangleMesh>(bumpyPhantom()));
+  const TriangleMesh& m = tree.mesh();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0, 1), sym(-1, 1);
+  int tight = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const int t = int(unit(rng) * m.triangles.size()) % int(m.triangles.size());
+    const Eigen::Vector3i& f = m.triangles[t];
+    const Vec3 c = (m.vertices[f[0]] + m.vertices[f[1]] + m.vertices[f[2]]) / 3;
+    const bool flat = i % 2 == 0;
+    // Half the segments lie parallel to the triangle's plane above it.
+    const Vec3 n = tree.normal(t);
+    Vec3 dir = Vec3(sym(rng), sym(rng), sym(rng)).normalized();
+    if (flat) dir = (dir - dir.dot(n) * n).normalized();
+    const Vec3 a = c + 0.6e-3 * Vec3(sym(rng), sym(rng), sym(rng)) + (flat ? Vec3(-0.4e-3 * unit(rng) * n) : Vec3(Vec3::Zero()));
+    const Vec3 b = a + 0.8e-3 * unit(rng) * dir;
+    const double exact = closestSegmentTriangle(a, b, m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]).distance;
+    const double bound = tree.distanceBound(t, a, b);
+    ASSERT_LE(bound, exact) << "sample " << i;
+    tight += flat && exact > 0 && bound > 0.999 * exact;
+  }
+  // (Flat segments whose shadow meets the triangle: the bound is the height.)
+  EXPECT_GT(tight, 1000);
 }
 
 // Segments near the surface (from a triangle, along its normal from 1 mm
