@@ -5,6 +5,7 @@
 // Detection fills these in Effect::beginStep; apply() only reads them.
 #include <vector>
 
+#include "physics/contact/triangle_cache.h"
 #include "physics/math.h"
 
 namespace coilsim {
@@ -68,6 +69,9 @@ struct RodContacts {
   // Per segment and obstacle, the triangle nearest to it at its last query
   // (-1: none): where the next query starts. Only a guess, never trusted.
   std::vector<int> wallHint;  // ((nnode - 1) x nobstacle)
+  // Per segment and obstacle, its last walk of the collision tree: its
+  // queries filter these triangles while their boxes stay within it.
+  std::vector<TriangleCache> wallCache;  // ((nnode - 1) x nobstacle)
 };
 
 }  // namespace coilsim

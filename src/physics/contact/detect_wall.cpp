@@ -3,18 +3,12 @@
 #include <limits>
 
 #include "physics/contact/detect.h"
+#include "physics/contact/detect_nearest.h"
 #include "physics/contact/geometry.h"
 #include "physics/contact/obstacle_tree.h"
 
 namespace coilsim {
 namespace {
-
-struct Nearest {
-  SegmentTriangle hit;
-  int triangle = -1;
-  size_t candidate = 0;  // its index in the query's candidates
-};
-
 
 // A node's own nearest wall gets a plane of its own unless one of the
 // segment's planes agrees with it within this fraction of the wire radius
@@ -25,68 +19,6 @@ constexpr double kNodePlane = 0.5 * kMissedContact;
 // clear can skip the next queries until it has moved that far (m).
 constexpr double kLookAhead = 0.5e-3;
 
-// Squared distance between two axis-aligned boxes (0 when they overlap).
-double boxDistance2(const Vec3& lo1, const Vec3& hi1, const Vec3& lo2, const Vec3& hi2) {
-  const Vec3 gap = (lo2 - hi1).cwiseMax(lo1 - hi2).cwiseMax(0.0);
-  return gap.squaredNorm();
-}
-
-// The nearest triangle feature to segment [a, b] among those whose boxes
-// overlap the segment's box grown by `reach`. A triangle whose own box is
-// farther from the segment's box than the best distance found so far cannot
-// be nearer and is skipped without the exact query. Leaves in `scratch`
-// the candidates, their closest points to the segment (hits, kept for the
-// concave-neighbour pass; NaN distance where a triangle was skipped because
-// its box is farther than the best so far) and the squared gaps between
-// the boxes (boxGap2, a lower bound of the distance from any point of the
-// segment).
-//
-// `slackScale` sets the tie slack (1e-9 of it), so that a narrower query of
-// the same segment keeps exactly the ties of a wider one. `hint` (a triangle
-// that was the segment's nearest before, or -1) only speeds the search: when
-// it is among the candidates its distance bounds the pruning from the
-// start, and the result is still the first nearest in the candidates' order.
-Nearest nearestFeature(const ObstacleTree& tree, const Vec3& a, const Vec3& b, double reach, ContactScratch& scratch,
-                       double slackScale, int hint = -1) {
-  std::vector<int>& candidates = scratch.candidates;
-  std::vector<SegmentTriangle>& hits = scratch.hits;
-  std::vector<double>& boxGap2 = scratch.boxGap2;
-  const Vec3 grow = Vec3::Constant(reach);
-  const Vec3 lo = a.cwiseMin(b), hi = a.cwiseMax(b);
-  candidates.clear();
-  tree.overlapping(lo - grow, hi + grow, scratch.stack, candidates);
-  hits.resize(candidates.size());
-  boxGap2.resize(candidates.size());
-  const TriangleMesh& m = tree.mesh();
-  // An upper bound of the nearest candidate's distance, from the hint.
-  double known = INFINITY;
-  size_t hintAt = candidates.size();
-  if (hint >= 0) {
-    hintAt = size_t(std::find(candidates.begin(), candidates.end(), hint) - candidates.begin());
-    if (hintAt < candidates.size()) {
-      const Eigen::Vector3i& f = m.triangles[hint];
-      hits[hintAt] = closestSegmentTriangle(a, b, m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]);
-      known = hits[hintAt].distance;
-    }
-  }
-  Nearest best;
-  for (size_t k = 0; k < candidates.size(); ++k) {
-    const Eigen::Vector3i& f = m.triangles[candidates[k]];
-    const Vec3 &p = m.vertices[f[0]], &q = m.vertices[f[1]], &r = m.vertices[f[2]];
-    // (With a little slack: a triangle sharing the nearest feature must
-    // not be lost to round-off, pseudoNormal needs it.)
-    const double bound = (best.triangle >= 0 ? std::min(best.hit.distance, known) : known) + 1e-9 * slackScale;
-    boxGap2[k] = boxDistance2(lo, hi, p.cwiseMin(q).cwiseMin(r), p.cwiseMax(q).cwiseMax(r));
-    if ((best.triangle >= 0 || known < INFINITY) && boxGap2[k] > bound * bound) {
-      hits[k].distance = std::numeric_limits<double>::quiet_NaN();
-      continue;
-    }
-    if (k != hintAt) hits[k] = closestSegmentTriangle(a, b, p, q, r);
-    if (best.triangle < 0 || hits[k].distance < best.hit.distance) best = {hits[k], candidates[k], k};
-  }
-  return best;
-}
-
 // The outward direction that decides the side of the nearest feature: the
 // face normal for a face, the angle-weighted pseudo-normal of the faces
 // sharing it for an edge or a vertex (Baerentzen and Aanaes, IEEE TVCG
@@ -95,7 +27,7 @@ Nearest nearestFeature(const ObstacleTree& tree, const Vec3& a, const Vec3& b, d
 // segments inside the sac near that rim were taken as 0.35-0.41 mm beyond
 // the wall and thrown with 35-49 N.
 // `found` are the closest points of the query that found n.
-Vec3 pseudoNormal(const ObstacleTree& tree, const Nearest& n, const std::vector<int>& candidates,
+Vec3 pseudoNormal(const ObstacleTree& tree, const NearestTriangle& n, const std::vector<int>& candidates,
                   const std::vector<SegmentTriangle>& found, double radius) {
   const double tol = 1e-9 * radius;
   const TriangleMesh& m = tree.mesh();
@@ -121,7 +53,7 @@ Vec3 pseudoNormal(const ObstacleTree& tree, const Nearest& n, const std::vector<
 // to the node than to the segment, so with the segment's nearest triangle
 // measured first, only those the segment found about as near are measured
 // (for a node on a wall, the few under it).
-Nearest nearestToNode(const ObstacleTree& tree, const Vec3& x, double s, const Nearest& segment, double reach,
+NearestTriangle nearestToNode(const ObstacleTree& tree, const Vec3& x, double s, const NearestTriangle& segment, double reach,
                       ContactScratch& scratch) {
   const std::vector<int>& candidates = scratch.candidates;
   const std::vector<SegmentTriangle>& hits = scratch.hits;
@@ -136,7 +68,7 @@ Nearest nearestToNode(const ObstacleTree& tree, const Vec3& x, double s, const N
     h.distance = (x - h.onTriangle).norm();
     return h;
   };
-  Nearest best{measure(segment.candidate), segment.triangle, segment.candidate};
+  NearestTriangle best{measure(segment.candidate), segment.triangle, segment.candidate};
   for (size_t k = 0; k < candidates.size(); ++k) {
     if (k == segment.candidate) continue;
     // (Not a triangle that shares the nearest feature: its distance may
@@ -156,7 +88,7 @@ Nearest nearestToNode(const ObstacleTree& tree, const Vec3& x, double s, const N
 // A contact from the nearest feature: normal from the feature to the centre
 // line, flipped (and the gap negative) when the centre line is outside.
 // `candidates` and `found` are those of the query that found n.
-ContactPoint makeContact(const ObstacleTree& tree, const Nearest& n, const std::vector<int>& candidates,
+ContactPoint makeContact(const ObstacleTree& tree, const NearestTriangle& n, const std::vector<int>& candidates,
                          const std::vector<SegmentTriangle>& found, int segment, int obstacle, double radius) {
   ContactPoint c;
   c.segment = segment;
@@ -209,6 +141,8 @@ void detectWallContacts(const Model& model, State& state, double h, double margi
       // A hint is only a guess (a node inserted at the catheter tip
       // renumbers the segments behind it), so it is kept across renumbering.
       rc.wallHint.resize(rc.wallClear.size() * model.obstacles.size(), -1);
+      // So is a cached walk of the tree: it is used only for boxes within its own.
+      rc.wallCache.resize(rc.wallHint.size());
       for (int e = 0; e + 1 < r.activeNodes; ++e) {
         const Vec3 &a = r.x[e], &b = r.x[e + 1];
         const double radius = (1 + kWallSkin) * 0.5 * (r.nodes[e].radius + r.nodes[e + 1].radius);
@@ -233,11 +167,12 @@ void detectWallContacts(const Model& model, State& state, double h, double margi
           // candidates. What follows only uses triangles within the reach,
           // so it comes out as from the wider query (docs/contact.md).
           int& hint = rc.wallHint[e * model.obstacles.size() + o];
-          Nearest n;
-          if (coherent) n = nearestFeature(tree, a, b, reach, scratch, reach + kLookAhead, hint);
+          TriangleCache* cache = coherent ? &rc.wallCache[e * model.obstacles.size() + o] : nullptr;
+          NearestTriangle n;
+          if (coherent) n = nearestWallFeature(tree, a, b, reach, scratch, reach + kLookAhead, hint, cache);
           if (n.triangle < 0 || n.hit.distance > reach) {
             // Queried beyond the reach, so the clearance found lasts a while.
-            n = nearestFeature(tree, a, b, reach + kLookAhead, scratch, reach + kLookAhead);
+            n = nearestWallFeature(tree, a, b, reach + kLookAhead, scratch, reach + kLookAhead, -1, cache);
           }
           hint = n.triangle;
           clear = std::min(clear, n.triangle < 0 ? reach + kLookAhead : n.hit.distance);
@@ -247,7 +182,7 @@ void detectWallContacts(const Model& model, State& state, double h, double margi
             ContactPoint probe;
             probe.segment = e, probe.other = int(o);
             if (!findPrevious(rc.previous, probe, r)) continue;
-            n = nearestFeature(tree, a, b, 4 * radius + margin, scratch, 4 * radius + margin);
+            n = nearestWallFeature(tree, a, b, 4 * radius + margin, scratch, 4 * radius + margin, -1, cache);
             if (n.triangle < 0) continue;
           }
           const size_t listed = rc.wall.size();
@@ -324,7 +259,7 @@ void detectWallContacts(const Model& model, State& state, double h, double margi
             // The segment's nearest point is this node: the same feature.
             if (n.hit.s == j) continue;
             const Vec3& x = j ? b : a;
-            const Nearest own = nearestToNode(tree, x, j, n, reach, scratch);
+            const NearestTriangle own = nearestToNode(tree, x, j, n, reach, scratch);
             if (own.triangle < 0 || own.hit.distance > reach) continue;
             ContactPoint p = makeContact(tree, own, candidates, nodeHits, e, int(o), radius);
             bool covered = false;
@@ -396,7 +331,7 @@ std::string checkWallContacts(const Model& model, const State& state, double mar
       for (size_t o = 0; o < model.obstacles.size(); ++o) {
         if (!model.obstacles[o].contact || o >= model.obstacleTrees.size()) continue;
         const ObstacleTree& tree = *model.obstacleTrees[o];
-        const Nearest n = nearestFeature(tree, a, b, 2 * radius, scratch, 2 * radius);
+        const NearestTriangle n = nearestWallFeature(tree, a, b, 2 * radius, scratch, 2 * radius);
         if (n.triangle < 0) continue;
         // The planes' penetration is linear along the segment: at the
         // deepest point s they allow (1 - s) known_a + s known_b.

@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "physics/contact/triangle_cache.h"
 #include "physics/math.h"
 #include "physics/triangle_mesh.h"
 
@@ -28,11 +29,28 @@ class ObstacleTree {
   const Vec3& normal(int t) const { return normals_[t]; }
   // Triangles whose box overlaps [lo, hi], appended to `out`.
   void overlapping(const Vec3& lo, const Vec3& hi, std::vector<int>& stack, std::vector<int>& out) const;
+  // The same triangles in the same order, from `cache` when [lo, hi] lies
+  // within its box: a triangle whose box overlaps [lo, hi] overlaps every
+  // box around it, and the walk meets the leaves in one fixed order, so
+  // filtering the triangles found for the larger box by their own boxes
+  // gives exactly what a walk for [lo, hi] gives. Otherwise the tree is
+  // walked for [lo, hi] grown by `slack` on every side, kept in `cache`.
+  void overlapping(const Vec3& lo, const Vec3& hi, double slack, TriangleCache& cache, std::vector<int>& stack,
+                   std::vector<int>& out) const;
+  // A lower bound of the distance from any point of segment [a, b] to
+  // triangle t: the segment's height over the triangle's plane and its
+  // shadow's distance from the disc around the triangle's centroid through
+  // its farthest vertex, made smaller by far more than round-off, so that a
+  // query may skip the triangle when this exceeds what it has found.
+  double distanceBound(int t, const Vec3& a, const Vec3& b) const;
 
  private:
   struct Impl;
   std::shared_ptr<const TriangleMesh> mesh_;
   std::vector<Vec3> normals_;  // (ntriangle)
+  std::vector<Vec3> boxLo_, boxHi_;  // (ntriangle) each triangle's box as the tree's leaf holds it
+  std::vector<Vec3> centroids_;      // (ntriangle)
+  std::vector<double> spheres_;      // (ntriangle) distance from the centroid to the farthest vertex, m
   std::unique_ptr<Impl> impl_;
 };
 
