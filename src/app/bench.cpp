@@ -147,7 +147,7 @@ void benchDeployment(Figures& fig, int beams, double speedMmS, bool quick) {
   const TimelineRun run = runTimeline(m, s, {{0.0, {DeviceCommand::Kind::Push, v, 0}}}, simulated);
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
   const std::string key = "deploy_realtime_ratio_n" + std::to_string(beams) + "_" + std::to_string(int(speedMmS)) + "mm_s";
-  fig.set(key, run.ok ? simulated / wall : 0.0);
+  fig.set(key, run.ok() ? simulated / wall : 0.0);
 }
 
 void printJson(Figures& fig) {

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "physics/beam.h"
+#include "physics/failure.h"
 
 namespace coilsim {
 namespace {
@@ -115,7 +116,7 @@ namespace {
 // its tip node lies at the tip pose (position, exit direction, normal).
 RestCurve buildCatheter(const DeploymentDef& d, Deployment& dep) {
   const CatheterDef& c = d.catheter;
-  auto bad = [&](const std::string& what) { throw std::invalid_argument("catheter: " + what); };
+  auto bad = [&](const std::string& what) { throw PhysicsError(badDefinition("catheter", what)); };
   const Material& m = c.material;
   if (!(m.youngModulus > 0) || !(m.shearModulus > 0) || !(m.density > 0) || !std::isfinite(m.youngModulus) ||
       !std::isfinite(m.shearModulus) || !std::isfinite(m.density))
@@ -172,7 +173,7 @@ RestCurve buildCatheter(const DeploymentDef& d, Deployment& dep) {
 }  // namespace
 
 Deployment addDeployment(const DeploymentDef& d, ModelDef& def) {
-  auto bad = [&](const std::string& what) { throw std::invalid_argument("deployment of '" + d.coilName + "': " + what); };
+  auto bad = [&](const std::string& what) { throw PhysicsError(badDefinition("deployment of '" + d.coilName + "'", what)); };
   if (!(d.coilLength > 0) || !std::isfinite(d.coilLength)) bad("coil length must be a finite positive number");
   if (d.coilBeams < 2) bad("the coil needs at least 2 beams");
   if (int(d.coilRest.points.size()) != d.coilBeams + 1) bad("rest shape has the wrong number of samples");
@@ -205,8 +206,8 @@ Deployment addDeployment(const DeploymentDef& d, ModelDef& def) {
   if (d.catheter.flexible) {
     try {
       catheterRest = buildCatheter(d, dep);
-    } catch (const std::invalid_argument& ex) {
-      bad(ex.what());
+    } catch (const PhysicsError& ex) {
+      bad(ex.failure().message());
     }
   }
   const int T = dep.tipNode;

@@ -65,14 +65,14 @@ std::string pushStatic(const Built& b, State& s, double target, double twist, do
     const State saved = s;
     slideDeployment(b.model, s, next, twist);
     const StaticReport r = solveWithEffects(b, s);
-    if (r.converged) {
+    if (r.converged()) {
       inc = std::min(step, inc * 2);
       continue;
     }
     s = saved;
     inc *= 0.5;
     if (inc < 1e-3 * step)
-      return "static equilibrium not reached while pushing to " + std::to_string(next * 1e3) + " mm: " + r.message;
+      return "static equilibrium not reached while pushing to " + std::to_string(next * 1e3) + " mm: " + r.message();
   }
   return {};
 }
@@ -171,7 +171,7 @@ std::vector<StageSim> StageSimulator::run(const ModelParams& p, bool warmStart) 
         std::copy(c.x.begin(), c.x.end(), chain.x.begin());
         std::copy(c.q.begin(), c.q.end(), chain.q.begin());
         const StaticReport r = solveWithEffects(b, w);
-        if (r.converged) {
+        if (r.converged()) {
           out[i] = collect(b, w);
           c.x.assign(chain.x.begin(), chain.x.begin() + chain.activeNodes);
           c.q.assign(chain.q.begin(), chain.q.begin() + chain.activeNodes);
@@ -211,7 +211,7 @@ std::vector<StageSim> StageSimulator::run(const ModelParams& p, bool warmStart) 
       // The file's push history drives the device (not commands): set, then advance.
       setDeployment(b.model, d, l, tw);
       const StepReport r = advance(b.model, d);
-      if (!r.ok()) err = "dynamic push failed at t = " + std::to_string(t) + " s: " + r.message;
+      if (!r.ok()) err = "dynamic push failed at t = " + std::to_string(t) + " s: " + r.message();
     }
     if (!err.empty()) {
       out[i].message = err;

@@ -14,6 +14,7 @@
 #include "physics/deployment.h"
 #include "physics/run.h"
 #include "physics/integrator.h"
+#include "support/refusal.h"
 #include "support/meshes.h"
 #include "support/known_bugs.h"
 #include "support/rod_models.h"
@@ -105,9 +106,9 @@ SecondDeployment deployBoth(bool rodContact) {
     }
   };
   const int push = int(kLength / kSpeed / dt);
-  EXPECT_EQ(command(c->model, c->state, {DeviceCommand::Kind::Push, kSpeed, kLength}), "");
+  EXPECT_EQ(coilsim::test::refusal(command(c->model, c->state, {DeviceCommand::Kind::Push, kSpeed, kLength})), "");
   run(c->model, push + 100, false);
-  EXPECT_EQ(command(c->model, c->state, {DeviceCommand::Kind::Detach, 0, 0}), "");
+  EXPECT_EQ(coilsim::test::refusal(command(c->model, c->state, {DeviceCommand::Kind::Detach, 0, 0})), "");
   run(c->model, 200, false);
   EXPECT_TRUE(c->state.device.detached);
   // The control switches coil-coil contact off for the second coil only (the
@@ -115,7 +116,7 @@ SecondDeployment deployBoth(bool rodContact) {
   for (EffectUse& u : c->modelSecond.effects)
     if (u.name() == "rod_contact") u.enabled = rodContact;
   c->state.device = c->second0;
-  EXPECT_EQ(command(c->modelSecond, c->state, {DeviceCommand::Kind::Push, kSpeed, kLength}), "");
+  EXPECT_EQ(coilsim::test::refusal(command(c->modelSecond, c->state, {DeviceCommand::Kind::Push, kSpeed, kLength})), "");
   run(c->modelSecond, push + 200, true);
   EXPECT_DOUBLE_EQ(c->state.device.deployed, kLength);
   return out;

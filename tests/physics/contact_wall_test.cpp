@@ -17,6 +17,7 @@
 #include "physics/deployment.h"
 #include "physics/run.h"
 #include "physics/integrator.h"
+#include "support/refusal.h"
 #include "support/meshes.h"
 #include "support/rod_models.h"
 
@@ -218,7 +219,7 @@ struct CavityPush {
 CavityPush pushIntoCavity(Cavity& c, double length) {
   CavityPush out;
   const test::ConvexCavity planes(c.mesh);
-  out.refused = command(c.model, c.state, {DeviceCommand::Kind::Push, 0.01, length});
+  out.refused = coilsim::test::refusal(command(c.model, c.state, {DeviceCommand::Kind::Push, 0.01, length}));
   const double dt = c.model.timeStep;
   out.planned = int(length / 0.01 / dt) + 300;
   for (; out.refused.empty() && out.steps < out.planned; ++out.steps) {
@@ -245,8 +246,8 @@ TEST(WallContactTest, DetectionFromLastStepFindsExactlyTheFreshQuerysContacts) {
   auto c = cavityDeployment(length, 30, true, true);
   State fresh = c->state;
   fresh.contactScratch.coherentWall = false;
-  ASSERT_EQ(command(c->model, c->state, {DeviceCommand::Kind::Push, 0.01, length}), "");
-  ASSERT_EQ(command(c->model, fresh, {DeviceCommand::Kind::Push, 0.01, length}), "");
+  ASSERT_EQ(coilsim::test::refusal(command(c->model, c->state, {DeviceCommand::Kind::Push, 0.01, length})), "");
+  ASSERT_EQ(coilsim::test::refusal(command(c->model, fresh, {DeviceCommand::Kind::Push, 0.01, length})), "");
   long contacts = 0;
   for (int i = 0; i < int(length / 0.01 / c->model.timeStep) + 200; ++i) {
     ASSERT_TRUE(advance(c->model, c->state).ok()) << "step " << i;
@@ -348,7 +349,7 @@ TEST(WallContactTest, AThickStiffWireIsHeldByTheDefaultWall) {
 TEST(WallContactTest, SwitchedOffTheCoilLeavesTheCavity) {
   const double length = 0.02;
   auto c = cavityDeployment(length, 40, false, false);
-  ASSERT_EQ(command(c->model, c->state, {DeviceCommand::Kind::Push, 0.01, length}), "");
+  ASSERT_EQ(coilsim::test::refusal(command(c->model, c->state, {DeviceCommand::Kind::Push, 0.01, length})), "");
   const double dt = c->model.timeStep;
   for (int i = 0; i < int(length / 0.01 / dt); ++i) {
     ASSERT_TRUE(advance(c->model, c->state).ok());
