@@ -71,7 +71,7 @@ std::string stepSummary(const Model& model, const State& state, long done, long 
 Outcome stopped(io::RunRecord& record, const State& state, std::string line) {
   record.status = "stopped";
   record.error = std::string(stopReason()) + " at t = " + fmt("%.6g", state.time) + " s, after a whole step";
-  return {false, true, std::move(line)};
+  return {false, true, std::move(line), {}};
 }
 
 Outcome simulateDynamic(const Model& model, State& state, long steps, io::RunRecord& record, const std::string& label) {
@@ -87,7 +87,7 @@ Outcome simulateDynamic(const Model& model, State& state, long steps, io::RunRec
   progress.finish();
   const std::string line = stepSummary(model, state, done, steps, progress.seconds()) + tips(model, state);
   if (report.ok() && done < steps) return stopped(record, state, line);
-  if (report.ok()) return {true, false, line};
+  if (report.ok()) return {true, false, line, {}};
   record.status = "step_refused";
   // The step's number says where in a run without a device timeline.
   record.error = "step " + std::to_string(done + 1) + " refused at t = " + fmt("%.6g", report.failure->time) +
@@ -156,7 +156,7 @@ Outcome simulateDeployment(const Model& model, State& state, const std::vector<T
                                         : std::string()) +
                      tipLine + "; state " + io::stateHash(state);
   if (run.stopped) return stopped(record, state, line);
-  if (run.ok()) return {true, false, line};
+  if (run.ok()) return {true, false, line, {}};
   record.status = "step_refused";
   record.error = describe(*run.failure);
   return {false, false, line, run.failure};
@@ -172,7 +172,7 @@ Outcome simulateStatic(const Model& model, State& state, const io::SceneSpec& sp
                            std::to_string(rep.increments) + " load increments and " + std::to_string(rep.iterations) +
                            " Newton iterations in " + fmt("%.3g", seconds) + " s; elastic energy " +
                            fmt("%.4g", e.elastic) + " J" + tips(model, state);
-  if (rep.converged()) return {true, false, line};
+  if (rep.converged()) return {true, false, line, {}};
   record.status = "not_converged";
   record.error = describe(*rep.failure);
   return {false, false, line, rep.failure};

@@ -1,12 +1,11 @@
 #include "physics/catheter.h"
-#include "physics/failure.h"
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <vector>
 
 #include "physics/beam.h"
+#include "physics/failure.h"
 
 namespace coilsim {
 namespace {

@@ -1,8 +1,8 @@
 #include "physics/rest_shape.h"
-#include "physics/failure.h"
 
 #include <cmath>
-#include <stdexcept>
+
+#include "physics/failure.h"
 
 namespace coilsim {
 namespace {

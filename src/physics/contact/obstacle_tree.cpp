@@ -1,12 +1,12 @@
 #include "physics/contact/obstacle_tree.h"
-#include "physics/failure.h"
 
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/math/bv/AABB.h>
+
+#include "physics/failure.h"
 
 namespace coilsim {
 
