@@ -28,13 +28,9 @@ Built build(const Measurement& m, const ModelParams& p, int beams, double timeSt
     def.effects.push_back(e);
     compliant = compliant || (e.enabled && releasesClamp(e));
   }
-  const RodSpec coil = coilWith(m.coil, p);
   DeploymentDef d;
-  d.coilLength = coil.length;
+  d.coil = p.coil;
   d.coilBeams = beams;
-  d.coilRest = makeRest(coil.rest, coil.length, beams);
-  d.coilMaterial = materialOf(coil);
-  d.coilSection = sectionOf(coil);
   d.tip = m.tip;
   d.maxPushSpeed = 1e9, d.maxTwistRate = 1e9;  // the file's history is what happened
   // A compliant catheter: the tip node hangs on the catheter_compliance spring instead of the rigid clamp.
@@ -108,10 +104,8 @@ StageSim collect(const Built& b, const State& s) {
 
 ModelParams ModelParams::nominal(const Measurement& m) {
   ModelParams p;
-  p.youngModulus = m.coil.youngModulus > 0 ? m.coil.youngModulus : 10e9;
-  p.poissonRatio = m.coil.poissonRatio;
-  p.loopDiameter = m.coil.rest.loopDiameter;
-  p.pitch = m.coil.rest.pitch;
+  p.coil = m.coil;
+  if (!(p.coil.youngModulus > 0)) p.coil.youngModulus = 10e9;
   return p;
 }
 
@@ -124,14 +118,6 @@ const EffectUse* ModelParams::effect(std::string_view name) const {
   for (const EffectUse& e : effects)
     if (e.name() == name) return &e;
   return nullptr;
-}
-
-RodSpec coilWith(const RodSpec& coil, const ModelParams& p) {
-  RodSpec out = coil;
-  out.youngModulus = p.youngModulus;
-  out.poissonRatio = p.poissonRatio;
-  if (out.rest.type == RestShapeDef::Type::Helix) out.rest.loopDiameter = p.loopDiameter, out.rest.pitch = p.pitch;
-  return out;
 }
 
 StageSimulator::StageSimulator(const Measurement& m, const SimOptions& o) : m_(m), options_(o) {

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "support/coil_spec.h"
 #include "support/refusal.h"
 #include "physics/catheter.h"
 #include "physics/deployment.h"
@@ -53,12 +54,9 @@ Rig makeRig(const CatheterDef& cath, double coilYoung, double deployed, double h
   def.timeStep = 1e-3;
   def.effects = std::move(effects);
   DeploymentDef d;
-  d.coilLength = 0.03;
+  d.coil = test::wireSpec(0.03, helixDiameter > 0 ? test::helixRest(helixDiameter, 0.0005) : RestShapeDef{}, coilYoung, 0.39, 21450,
+                    0.15e-3);
   d.coilBeams = 60;
-  d.coilRest = helixDiameter > 0 ? makeHelix(d.coilLength, d.coilBeams, helixDiameter, 0.0005, true)
-                                 : makeStraight(d.coilLength, d.coilBeams);
-  d.coilMaterial = {coilYoung, shearModulusOf(coilYoung, 0.39), 21450};
-  d.coilSection = circularSection(0.15e-3, 0.39);
   d.tip.position = Vec3(0.001, 0.002, 0.003);
   d.tip.direction = Vec3(0, 1, 0);
   d.tip.normal = Vec3(0, 0, 1);
@@ -266,11 +264,8 @@ TEST(CatheterTest, CoilLengthAndMassAreConservedThroughDeployRetractDeployInAFle
 TEST(CatheterTest, BadCatheterDefinitionsAreRefused) {
   ModelDef def;
   DeploymentDef d;
-  d.coilLength = 0.03;
+  d.coil = test::wireSpec(0.03, RestShapeDef{}, 7.5e9, 0.39, 21450, 0.15e-3);
   d.coilBeams = 30;
-  d.coilRest = makeStraight(0.03, 30);
-  d.coilMaterial = {7.5e9, shearModulusOf(7.5e9, 0.39), 21450};
-  d.coilSection = circularSection(0.15e-3, 0.39);
   d.tip.normal = Vec3(0, 0, 1);
   d.catheter = testCatheter(CatheterShape::Type::J, 180 * kDeg, CompositeWeighting::BendingStiffness);
   EXPECT_THROW(addDeployment(d, def), std::invalid_argument) << "a J of 12.6 mm arc in 10 mm of free catheter";

@@ -14,6 +14,7 @@
 #include "physics/deployment.h"
 #include "physics/run.h"
 #include "physics/integrator.h"
+#include "support/coil_spec.h"
 #include "support/refusal.h"
 #include "support/meshes.h"
 #include "support/known_bugs.h"
@@ -38,11 +39,8 @@ struct TwoCoils {
 DeploymentDef coilDef(const char* name, double loop, const Vec3& tip) {
   DeploymentDef d;
   d.coilName = name;
-  d.coilLength = kLength;
+  d.coil = test::wireSpec(kLength, test::helixRest(loop, 0.4e-3), 7.5e9, test::kPlatinumPoisson, 21450, kRadius);
   d.coilBeams = 50;
-  d.coilRest = makeHelix(kLength, d.coilBeams, loop, 0.4e-3, true);
-  d.coilMaterial = test::platinum();
-  d.coilSection = circularSection(kRadius, test::kPlatinumPoisson);
   d.tip.position = tip;
   d.tip.direction = Vec3(0, 0, 1);
   d.tip.normal = Vec3(1, 0, 0);

@@ -17,6 +17,7 @@
 #include "physics/deployment.h"
 #include "physics/run.h"
 #include "physics/integrator.h"
+#include "support/coil_spec.h"
 #include "support/refusal.h"
 #include "support/meshes.h"
 #include "support/rod_models.h"
@@ -176,11 +177,8 @@ std::unique_ptr<Cavity> cavityDeployment(double coilLength, int beams, bool wall
   def.effects.back().enabled = self;
   def.obstacles.push_back(obstacleOf(c->mesh));
   DeploymentDef d;
-  d.coilLength = coilLength;
+  d.coil = test::wireSpec(coilLength, test::helixRest(6e-3, 0.4e-3), 7.5e9, test::kPlatinumPoisson, 21450, wire);
   d.coilBeams = beams;
-  d.coilRest = makeHelix(coilLength, beams, 6e-3, 0.4e-3, true);
-  d.coilMaterial = test::platinum();
-  d.coilSection = circularSection(wire, test::kPlatinumPoisson);
   d.tip.position = Vec3(0, 0, -2.5e-3);
   d.tip.direction = Vec3(0, 0, 1);
   d.tip.normal = Vec3(1, 0, 0);

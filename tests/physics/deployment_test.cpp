@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "support/coil_spec.h"
 #include "support/refusal.h"
 #include "physics/deployment.h"
 #include "physics/run.h"
@@ -34,11 +35,8 @@ Bench makeBench(bool gravity, double alpha = 20.0, double initial = 0.0, double 
   def.damping.massCoeff = alpha;
   def.timeStep = 1e-3;
   DeploymentDef d;
-  d.coilLength = kLength;
+  d.coil = test::wireSpec(kLength, test::helixRest(kLoop, kPitch), young, 0.39, 21450, 0.15e-3);
   d.coilBeams = kBeams;
-  d.coilRest = makeHelix(kLength, kBeams, kLoop, kPitch, true);
-  d.coilMaterial = {young, shearModulusOf(young, 0.39), 21450};
-  d.coilSection = circularSection(0.15e-3, 0.39);
   d.tip.position = Vec3(0.001, 0.002, 0.003);
   d.tip.direction = Vec3(1, 0, 0);
   d.tip.normal = Vec3(0, 0, 1);
