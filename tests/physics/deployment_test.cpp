@@ -13,6 +13,7 @@
 #include "support/coil_spec.h"
 #include "support/refusal.h"
 #include "physics/deployment.h"
+#include "physics/failure.h"
 #include "physics/run.h"
 #include "physics/integrator.h"
 
@@ -199,6 +200,29 @@ TEST(DeploymentTest, InvalidCommandsAreRefusedWithAReasonAndChangeNothing) {
   run(d, {}, 0.001);
   EXPECT_NE(coilsim::test::refusal(command(d.model, d.state, {K::Pull, 0.01, 0.001})), "") << "pull after detach";
   EXPECT_NE(coilsim::test::refusal(command(d.model, d.state, {K::Twist, 1.0, 0.1})), "") << "twist after detach";
+}
+
+// The coil's RodSpec is sampled by compileModel: a rest shape that cannot be
+// built (a polyline of one point) is refused naming the deployment.
+TEST(DeploymentTest, ACoilRestShapeThatCannotBeBuiltNamesTheDeployment) {
+  ModelDef def;
+  DeploymentDef d;
+  d.coilName = "probe";
+  RestShapeDef dot;
+  dot.type = RestShapeDef::Type::Polyline;
+  dot.points = {Vec3::Zero()};
+  d.coil = test::wireSpec(kLength, dot, 7.5e9, 0.39, 21450, 0.15e-3);
+  d.coilBeams = kBeams;
+  d.tip.normal = Vec3(0, 0, 1);
+  def.device = d;
+  try {
+    compileModel(def);
+    ADD_FAILURE() << "a one-point polyline was accepted";
+  } catch (const PhysicsError& e) {
+    EXPECT_EQ(e.failure().kind, FailureKind::BadDefinition);
+    EXPECT_EQ(e.failure().where(), "deployment of 'probe'");
+    EXPECT_NE(e.failure().text.find("rest shape"), std::string::npos) << e.what();
+  }
 }
 
 TEST(DeploymentTest, ReachingTheCoilsEndIsSaidOnceEvenWhileTheCatheterIsRetracted) {
