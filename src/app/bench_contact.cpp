@@ -65,11 +65,13 @@ void benchContactFigures(const std::function<void(const std::string&, double)>& 
   // The paper's 150 mm coil (300 beams), the catheter tip 2 mm past the neck
   // plane, pointing at the dome.
   DeploymentDef d;
-  d.coilLength = 0.150;
+  // The paper's coil: 150 mm of platinum wire of radius 0.3556 mm in 7 mm helical loops.
+  d.coil.length = 0.150;
+  d.coil.rest.type = RestShapeDef::Type::Helix;
+  d.coil.rest.loopDiameter = 0.007, d.coil.rest.pitch = 0.00096;
+  d.coil.youngModulus = 7.5e9, d.coil.poissonRatio = 0.39, d.coil.density = 21450;
+  d.coil.wireRadius = 0.3556e-3;
   d.coilBeams = 300;
-  d.coilRest = makeHelix(d.coilLength, d.coilBeams, 0.007, 0.00096, true);
-  d.coilMaterial = {7.5e9, shearModulusOf(7.5e9, 0.39), 21450};
-  d.coilSection = circularSection(0.3556e-3, 0.39);
   d.tip.direction = info.neck.normal;
   d.tip.position = units::kMetresPerMm * (info.neck.point + 2.0 * info.neck.normal);
   d.tip.normal = info.axisU;
@@ -134,7 +136,7 @@ void benchContactFigures(const std::function<void(const std::string&, double)>& 
   set("contact_free_step_us_n300", freeStep);
   set("contact_over_free_n300", freeStep > 0 ? contact / n / freeStep : 0.0);
   set("contact_max_penetration_um", units::mToUm(penetration));
-  set("contact_max_penetration_of_radius", penetration / d.coilSection.radius);
+  set("contact_max_penetration_of_radius", penetration / d.coil.wireRadius);
   set("contact_detect_mismatches", mismatches);
   set("contact_run_ok", ok ? 1.0 : 0.0);
   set("contact_free_run_ok", freeOk ? 1.0 : 0.0);
@@ -148,7 +150,7 @@ void benchContactFigures(const std::function<void(const std::string&, double)>& 
   std::printf("  step %.1f us, of which detection %.1f us; the same deployment without contacts %.1f us per step; "
               "ratio %.2f; deepest wall penetration %.1f um (%.1f %% of the wire radius)\n",
               contact / n, detect / n, freeStep, freeStep > 0 ? contact / n / freeStep : 0.0, units::mToUm(penetration),
-              100 * penetration / d.coilSection.radius);
+              100 * penetration / d.coil.wireRadius);
 }
 
 }  // namespace coilsim

@@ -46,7 +46,7 @@ void benchDenseFigures(const std::function<void(const std::string&, double)>& se
     for (const RodModel& r : model.rods) segments += r.nnode - 1;
     const int warm = 3, steps = quick ? 5 : 20;
     for (int i = 0; i < warm; ++i)
-      if (const StepReport rep = step(model, s); !rep.ok() && !json) std::printf("  (%d mm, warm-up: %s)\n", mm, rep.message.c_str());
+      if (const StepReport rep = step(model, s); !rep.ok() && !json) std::printf("  (%d mm, warm-up: %s)\n", mm, rep.message().c_str());
     double stepUs = 0, detectUs = 0, freshUs = 0;
     long contacts = 0;
     bool ok = true;
@@ -65,7 +65,7 @@ void benchDenseFigures(const std::function<void(const std::string&, double)>& se
       t0 = cpuMicroseconds();
       const StepReport rep = step(model, s);
       stepUs += cpuMicroseconds() - t0;
-      if (!rep.ok() && ok && !json) std::printf("  (%d mm: %s)\n", mm, rep.message.c_str());
+      if (!rep.ok() && ok && !json) std::printf("  (%d mm: %s)\n", mm, rep.message().c_str());
       ok = rep.ok() && ok;
       for (const RodState& r : s.rods) contacts += long(r.contact.wall.size() + r.contact.self.size() + r.contact.rod.size());
     }

@@ -40,7 +40,7 @@ Measurement benchMeasurement(bool hidden) {
     m.stages.push_back(s);
   }
   ModelParams truth = ModelParams::nominal(m);
-  truth.youngModulus = 5.6e9;
+  truth.coil.youngModulus = 5.6e9;
   // Two hidden effects make diagnose run its forward selection (a second
   // round of refits, the free fit of the selected model) as on a file
   // where something is missing: a compliant tube and a tilted bench.

@@ -235,7 +235,7 @@ int runDiagnose(const std::vector<std::string>& argsIn) {
     if (std::none_of(fit.begin(), fit.end(), isYoungModulus)) fit.insert(fit.begin(), youngModulusFit());
     for (size_t i = 0; i < files.size(); ++i) jf.push_back({sims[i].get(), cmps[i].get(), ModelParams::nominal(files[i].m)});
     // One coil: the first file's nominal coil values for all (each keeps its setup).
-    for (JointFile& f : jf) f.start.youngModulus = jf[0].start.youngModulus, f.start.poissonRatio = jf[0].start.poissonRatio;
+    for (JointFile& f : jf) f.start.coil.youngModulus = jf[0].start.coil.youngModulus, f.start.coil.poissonRatio = jf[0].start.coil.poissonRatio;
     const JointDiagnosis jd = diagnoseJoint(jf, fit, [&](const std::string& s) { say("diagnose: " + s); });
     j["format"] = "coilsim-diagnosis/1";
     j["files"] = perFile;

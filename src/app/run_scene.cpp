@@ -54,6 +54,7 @@ struct Outcome {
   bool ok = true;
   bool stopped = false;  // by SIGINT or SIGTERM, after a whole step
   std::string summary;  // one line, without the scene name
+  std::optional<Failure> failure;  // why it failed (not ok, not stopped)
 };
 
 std::string stepSummary(const Model& model, const State& state, long done, long steps, double seconds) {
@@ -70,7 +71,7 @@ std::string stepSummary(const Model& model, const State& state, long done, long 
 Outcome stopped(io::RunRecord& record, const State& state, std::string line) {
   record.status = "stopped";
   record.error = std::string(stopReason()) + " at t = " + fmt("%.6g", state.time) + " s, after a whole step";
-  return {false, true, std::move(line)};
+  return {false, true, std::move(line), {}};
 }
 
 Outcome simulateDynamic(const Model& model, State& state, long steps, io::RunRecord& record, const std::string& label) {
@@ -86,11 +87,12 @@ Outcome simulateDynamic(const Model& model, State& state, long steps, io::RunRec
   progress.finish();
   const std::string line = stepSummary(model, state, done, steps, progress.seconds()) + tips(model, state);
   if (report.ok() && done < steps) return stopped(record, state, line);
-  if (report.ok()) return {true, false, line};
+  if (report.ok()) return {true, false, line, {}};
   record.status = "step_refused";
-  record.error = "step " + std::to_string(done + 1) + " refused at t = " + fmt("%.6g", state.time) +
-                 " s: " + report.message;
-  return {false, false, line};
+  // The step's number says where in a run without a device timeline.
+  record.error = "step " + std::to_string(done + 1) + " refused at t = " + fmt("%.6g", report.failure->time) +
+                 " s: " + report.failure->message();
+  return {false, false, line, report.failure};
 }
 
 // runTimeline reports a refused command as "t = <its time> s: refused: why";
@@ -130,10 +132,7 @@ Outcome simulateDeployment(const Model& model, State& state, const std::vector<T
   });
   progress.finish();
   const double seconds = progress.seconds();
-  // The last entry of a failed run says which step was refused; the others
-  // are refused commands and limits reached on the way.
-  std::string stepError;
-  if (!run.ok && !run.log.empty()) stepError = run.log.back(), run.log.pop_back();
+  // The log holds refused commands and limits reached on the way.
   const std::string source = timelineFile.empty() ? std::string("deployment") : timelineFile;
   size_t cursor = 0;  // refusals come in timeline order
   for (std::string entry : run.log) {
@@ -157,10 +156,10 @@ Outcome simulateDeployment(const Model& model, State& state, const std::vector<T
                                         : std::string()) +
                      tipLine + "; state " + io::stateHash(state);
   if (run.stopped) return stopped(record, state, line);
-  if (run.ok) return {true, false, line};
+  if (run.ok()) return {true, false, line, {}};
   record.status = "step_refused";
-  record.error = stepError.empty() ? "a step was refused" : stepError;
-  return {false, false, line};
+  record.error = describe(*run.failure);
+  return {false, false, line, run.failure};
 }
 
 Outcome simulateStatic(const Model& model, State& state, const io::SceneSpec& spec, io::RunRecord& record) {
@@ -169,14 +168,14 @@ Outcome simulateStatic(const Model& model, State& state, const io::SceneSpec& sp
   record.statics = rep;
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   const Energy e = computeEnergy(model, state);
-  const std::string line = std::string("static, ") + (rep.converged ? "converged" : "NOT converged") + " after " +
+  const std::string line = std::string("static, ") + (rep.converged() ? "converged" : "NOT converged") + " after " +
                            std::to_string(rep.increments) + " load increments and " + std::to_string(rep.iterations) +
                            " Newton iterations in " + fmt("%.3g", seconds) + " s; elastic energy " +
                            fmt("%.4g", e.elastic) + " J" + tips(model, state);
-  if (rep.converged) return {true, false, line};
+  if (rep.converged()) return {true, false, line, {}};
   record.status = "not_converged";
-  record.error = "static solve did not converge: " + rep.message;
-  return {false, false, line};
+  record.error = describe(*rep.failure);
+  return {false, false, line, rep.failure};
 }
 
 // The clinical read-outs of a deployment into a phantom's sac (the lines the
@@ -228,6 +227,9 @@ int run(const RunOptions& o) {
   Model model;
   try {
     model = compileModel(io::compileScene(spec));
+  } catch (const PhysicsError& e) {
+    std::fprintf(stderr, "coilsim: %s: %s\n", o.scene.c_str(), describe(e.failure()).c_str());
+    return exitCodeOf(e.failure());
   } catch (const io::InputError&) {
     throw;
   } catch (const std::exception& e) {
@@ -299,6 +301,7 @@ int run(const RunOptions& o) {
       return kExitFailure;
     }
   }
+  if (r.failure) return exitCodeOf(*r.failure);
   return r.ok ? kExitOk : kExitFailure;
 }
 

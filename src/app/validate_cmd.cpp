@@ -380,7 +380,7 @@ int runValidateJoint(const WorkbenchArgs& a) {
     for (const std::string& file : a.files) {
       ms.push_back(io::readMeasurement(file));
       ModelParams p = ModelParams::nominal(ms.back());
-      if (!starts.empty()) p.youngModulus = starts[0].youngModulus, p.poissonRatio = starts[0].poissonRatio;  // one coil
+      if (!starts.empty()) p.coil.youngModulus = starts[0].coil.youngModulus, p.coil.poissonRatio = starts[0].coil.poissonRatio;  // one coil
       for (const std::string& e : a.effects) p.effects.push_back(effectFromFile(e, ms.back()));
       starts.push_back(p);
     }

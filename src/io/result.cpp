@@ -96,7 +96,7 @@ nlohmann::ordered_json resultJson(const Model& model, const State& state, const 
                   {"max_wall_penetration_um", 1e6 * st.maxWallPenetration},
                   {"max_wall_penetration_of_radius", st.maxWallPenetrationOfRadius}};
   if (run.statics)
-    out["static"] = {{"converged", run.statics->converged},
+    out["static"] = {{"converged", run.statics->converged()},
                      {"increments", run.statics->increments},
                      {"iterations", run.statics->iterations}};
   if (run.readouts) {

@@ -182,12 +182,11 @@ DeploymentDef compileDeployment(const SceneSpec& s, const DeploymentSpec& d) {
   using namespace units;
   DeploymentDef def;
   def.coilName = d.coilName;
-  const RodSpec coil = rodSpecOf(d.lengthMm, d.rest, d.material, d.section);
-  def.coilLength = coil.length;
+  def.coil = rodSpecOf(d.lengthMm, d.rest, d.material, d.section);
   def.coilBeams = d.beams;
-  def.coilRest = compileRest(s, coil, d.beams, "/deployment/coil");
-  def.coilMaterial = materialOf(coil);
-  def.coilSection = sectionOf(coil);
+  // compileModel samples the rest shape; sampled here first so that a shape
+  // that cannot be built is named by its JSON path.
+  compileRest(s, def.coil, d.beams, "/deployment/coil");
   def.tip.position = d.catheter.tipPositionMm * kMetresPerMm;
   def.tip.direction = d.catheter.direction;
   def.tip.normal = d.catheter.referenceNormal;

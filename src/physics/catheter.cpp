@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <vector>
 
 #include "physics/beam.h"
+#include "physics/failure.h"
 
 namespace coilsim {
 namespace {
@@ -19,8 +19,8 @@ struct Piece {
 std::vector<Piece> pieces(const CatheterShape& s, double length) {
   const double bends = s.bendLength();
   if (!(bends <= length * (1 + 1e-12)))
-    throw std::invalid_argument("catheter tip bends need " + std::to_string(bends * 1e3) + " mm but the catheter is " +
-                                std::to_string(length * 1e3) + " mm long");
+    throw PhysicsError(badDefinition({}, "catheter tip bends need " + std::to_string(bends * 1e3) +
+                                                " mm but the catheter is " + std::to_string(length * 1e3) + " mm long"));
   std::vector<Piece> p{{std::max(0.0, length - bends), 0.0}};
   const double k = s.radius > 0 ? 1.0 / s.radius : 0.0;
   switch (s.type) {
@@ -59,7 +59,7 @@ Section tubeSection(double ro, double ri, double nu) {
 }
 
 RestCurve makeCatheterRest(const CatheterShape& shape, double length, int beams) {
-  if (beams < 1) throw std::invalid_argument("the catheter needs at least 1 beam");
+  if (beams < 1) throw PhysicsError(badDefinition({}, "the catheter needs at least 1 beam"));
   const std::vector<Piece> ps = pieces(shape, length);
   RestCurve c;
   // Walk the pieces once, sampling at s_i = i L / beams with the exact arc formulas.

@@ -60,7 +60,7 @@ Section tubeSection(double outerRadius, double innerRadius, double poisson);
 // Canonical catheter centre line and frames (base at the origin, along +x,
 // d1 +y, bends about d2 = +z), sampled exactly (straight pieces and circular
 // arcs) at `beams` + 1 equally spaced arc lengths. Throws
-// std::invalid_argument if the bends are longer than `length`.
+// PhysicsError (physics/failure.h) if the bends are longer than `length`.
 RestCurve makeCatheterRest(const CatheterShape& shape, double length, int beams);
 
 // The composite rest rotation of node b in node a's frame, from the

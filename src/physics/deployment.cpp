@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "physics/beam.h"
+#include "physics/failure.h"
 
 namespace coilsim {
 namespace {
@@ -115,7 +116,7 @@ namespace {
 // its tip node lies at the tip pose (position, exit direction, normal).
 RestCurve buildCatheter(const DeploymentDef& d, Deployment& dep) {
   const CatheterDef& c = d.catheter;
-  auto bad = [&](const std::string& what) { throw std::invalid_argument("catheter: " + what); };
+  auto bad = [&](const std::string& what) { throw PhysicsError(badDefinition("catheter", what)); };
   const Material& m = c.material;
   if (!(m.youngModulus > 0) || !(m.shearModulus > 0) || !(m.density > 0) || !std::isfinite(m.youngModulus) ||
       !std::isfinite(m.shearModulus) || !std::isfinite(m.density))
@@ -172,11 +173,17 @@ RestCurve buildCatheter(const DeploymentDef& d, Deployment& dep) {
 }  // namespace
 
 Deployment addDeployment(const DeploymentDef& d, ModelDef& def) {
-  auto bad = [&](const std::string& what) { throw std::invalid_argument("deployment of '" + d.coilName + "': " + what); };
-  if (!(d.coilLength > 0) || !std::isfinite(d.coilLength)) bad("coil length must be a finite positive number");
+  auto bad = [&](const std::string& what) { throw PhysicsError(badDefinition("deployment of '" + d.coilName + "'", what)); };
+  const double length = d.coil.length;
+  if (!(length > 0) || !std::isfinite(length)) bad("coil length must be a finite positive number");
   if (d.coilBeams < 2) bad("the coil needs at least 2 beams");
-  if (int(d.coilRest.points.size()) != d.coilBeams + 1) bad("rest shape has the wrong number of samples");
-  if (!(d.initialDeployed >= 0) || d.initialDeployed > d.coilLength * (1 + 1e-12))
+  RestCurve coilRest;
+  try {
+    coilRest = makeRest(d.coil.rest, length, d.coilBeams);
+  } catch (const PhysicsError& ex) {
+    bad("rest shape: " + ex.failure().message());
+  }
+  if (!(d.initialDeployed >= 0) || d.initialDeployed > length * (1 + 1e-12))
     bad("initial deployed length must lie in [0, coil length]");
   if (!std::isfinite(d.initialTwist)) bad("initial twist is not finite");
   if (!(d.maxPushSpeed > 0) || !(d.maxTwistRate > 0)) bad("speed limits must be positive");
@@ -186,13 +193,13 @@ Deployment addDeployment(const DeploymentDef& d, ModelDef& def) {
     bad("tip reference normal must not be parallel to the direction");
 
   Deployment dep;
-  dep.coilLength = d.coilLength;
+  dep.coilLength = length;
   dep.coilBeams = d.coilBeams;
-  dep.spacing = d.coilLength / d.coilBeams;
-  dep.restX = d.coilRest.points;
-  dep.restF = d.coilRest.frames;
-  dep.material = d.coilMaterial;
-  dep.section = d.coilSection;
+  dep.spacing = length / d.coilBeams;
+  dep.restX = coilRest.points;
+  dep.restF = coilRest.frames;
+  dep.material = materialOf(d.coil);
+  dep.section = sectionOf(d.coil);
   dep.tip = d.tip;
   dep.maxPushSpeed = d.maxPushSpeed;
   dep.maxTwistRate = d.maxTwistRate;
@@ -205,8 +212,8 @@ Deployment addDeployment(const DeploymentDef& d, ModelDef& def) {
   if (d.catheter.flexible) {
     try {
       catheterRest = buildCatheter(d, dep);
-    } catch (const std::invalid_argument& ex) {
-      bad(ex.what());
+    } catch (const PhysicsError& ex) {
+      bad(ex.failure().message());
     }
   }
   const int T = dep.tipNode;
@@ -215,12 +222,12 @@ Deployment addDeployment(const DeploymentDef& d, ModelDef& def) {
   RodDef free;
   free.name = d.coilName + " (detached)";
   free.role = RodRole::Coil;
-  free.length = d.coilLength;
+  free.length = length;
   free.beams = d.coilBeams;
-  free.rest = d.coilRest;
+  free.rest = coilRest;
   free.placement = d.tip;
-  free.material = d.coilMaterial;
-  free.section = d.coilSection;
+  free.material = dep.material;
+  free.section = dep.section;
 
   // The chain: catheter nodes 0..T-1, then the tip node T and coil nodes
   // 1..N. Coil material and section throughout (the catheter's elements and
@@ -229,13 +236,13 @@ Deployment addDeployment(const DeploymentDef& d, ModelDef& def) {
   RodDef chain = free;
   chain.name = d.coilName;
   if (T > 0) {
-    const RestCurve coil = placed(d.coilRest, d.tip);
+    const RestCurve coil = placed(coilRest, d.tip);
     chain.rest = catheterRest;
     chain.rest.points.pop_back(), chain.rest.frames.pop_back();
     chain.rest.points.insert(chain.rest.points.end(), coil.points.begin(), coil.points.end());
     chain.rest.frames.insert(chain.rest.frames.end(), coil.frames.begin(), coil.frames.end());
     chain.placement = Placement{};
-    chain.length = d.coilLength + d.catheter.heldLength + d.catheter.freeLength;
+    chain.length = length + d.catheter.heldLength + d.catheter.freeLength;
     chain.beams = T + d.coilBeams;
   }
   // Held: every catheter node within the held length (the tip node alone for the rigid tip).

@@ -26,7 +26,7 @@ void syncCatheterDrawing(const Model& model, State& state);
 
 // Appends the chain rod, the free (detached) coil rod and a drawn catheter
 // to `def`; returns the constants. compileModel calls it for ModelDef::device.
-// Throws std::invalid_argument naming the field on bad input (non-positive
+// Throws PhysicsError (physics/failure.h) naming the field on bad input (non-positive
 // length, initial deployment beyond L, catheter bends longer than its free
 // length...).
 Deployment addDeployment(const DeploymentDef& d, ModelDef& def);

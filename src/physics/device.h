@@ -39,6 +39,7 @@
 #include "physics/element.h"
 #include "physics/math.h"
 #include "physics/rest_shape.h"
+#include "physics/rod_spec.h"
 #include "physics/section.h"
 
 namespace coilsim {
@@ -46,11 +47,8 @@ namespace coilsim {
 // What a user specifies for a deployment (SI, checked by compileModel).
 struct DeploymentDef {
   std::string coilName = "coil";
-  double coilLength = 0;  // m
+  RodSpec coil;           // length, rest shape (from the proximal end, u = L, to the distal tip, u = 0), material, section
   int coilBeams = 0;      // N; the material spacing is h = L / N
-  RestCurve coilRest;     // canonical, from the proximal end (u = L) to the distal tip (u = 0)
-  Material coilMaterial;
-  Section coilSection;
   Placement tip;          // catheter tip at rest: position, exit direction, reference normal (d1 at zero twist)
   double catheterOuterRadius = 0.3e-3;  // m, for drawing the rigid catheter (catheter.outerRadius for a flexible one)
   double catheterDrawLength = 0.02;     // m of rigid catheter drawn behind the tip

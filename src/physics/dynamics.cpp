@@ -89,8 +89,11 @@ StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, d
       for (int d = 0; d < 6; ++d)
         if (m & (1u << d)) applyDirichlet(A, w.rhs, i, d, w.fixedValue[i][d] - w.velocity[i][d], n);
     }
-    if (!w.solver.factorize(A, n))
-      return {StepStatus::SolverFailure, "rod '" + rm.name + "': implicit matrix is not positive definite"};
+    if (!w.solver.factorize(A, n)) {
+      Failure f = badRod(rm.name, "implicit matrix is not positive definite");
+      f.kind = FailureKind::SolverFailure;
+      return {std::move(f)};
+    }
     w.solver.solve(w.rhs);
     for (int i = 0; i < n; ++i) {
       r.v[i] += w.rhs[i].head<3>();
@@ -128,14 +131,16 @@ StepReport attempt(const Model& model, State& state, double h, bool detect, bool
   StepReport report;
   for (size_t k = 0; k < model.rods.size() && report.ok(); ++k)
     if (state.rods[k].active) report = stepRod(model, int(k), state.rods[k], state.time, h, iterations);
-  if (report.ok()) {
-    const std::string problem = checkHealth(model, state);
-    if (!problem.empty()) report = {StepStatus::BlowUp, problem};
-  }
+  if (report.ok()) report.failure = checkHealth(model, state);
   for (size_t k = 0; k < model.effects.size() && verify && report.ok(); ++k)
     if (model.effects[k].enabled) {
       std::string missed = model.effects[k].effect->endStep(model, model.effects[k].values, state, h);
-      if (!missed.empty()) report = {StepStatus::Missed, std::move(missed)};
+      if (!missed.empty()) {
+        Failure f;
+        f.kind = FailureKind::MissedContact;
+        f.text = std::move(missed);  // the effect names the rods and segments itself
+        report.failure = std::move(f);
+      }
     }
   return report;
 }
@@ -198,27 +203,34 @@ void recordWallPenetration(const Model& model, State& state) {
 }
 
 // Where a state that the last step left healthy was made non-finite from
-// outside (a device placed at an absurd pose, a caller's edit): empty if none.
-std::string nonFiniteStart(const Model& model, const State& state) {
+// outside (a device placed at an absurd pose, a caller's edit): nothing if none.
+std::optional<Failure> nonFiniteStart(const Model& model, const State& state) {
   for (size_t k = 0; k < state.rods.size(); ++k) {
     const RodState& r = state.rods[k];
     if (!r.active) continue;
-    for (int i = 0; i < r.activeNodes; ++i)
-      if (!std::isfinite(r.x[i].sum() + r.q[i].coeffs().sum() + r.v[i].sum() + r.w[i].sum()))
-        return "rod '" + model.rods[k].name + "' node " + std::to_string(i) +
-               ": non-finite position, rotation or velocity before the step";
+    for (int i = 0; i < r.activeNodes; ++i) {
+      const double sum = r.x[i].sum() + r.q[i].coeffs().sum() + r.v[i].sum() + r.w[i].sum();
+      if (std::isfinite(sum)) continue;
+      Failure f = badRod(model.rods[k].name, "non-finite position, rotation or velocity before the step");
+      f.kind = FailureKind::BlowUp;
+      f.node = i;
+      f.quantity = "position, rotation or velocity";
+      f.value = sum, f.limit = INFINITY;
+      return f;
+    }
   }
-  return {};
+  return std::nullopt;
 }
 
 }  // namespace
 
 StepReport step(const Model& model, State& state) {
   // Contact detection must never see non-finite positions: refused before it runs.
-  if (std::string bad = nonFiniteStart(model, state); !bad.empty()) {
+  if (std::optional<Failure> bad = nonFiniteStart(model, state)) {
     ++state.blowups;
-    warnOnce(state, "step refused at t = " + std::to_string(state.time) + " s: " + bad);
-    return {StepStatus::BlowUp, std::move(bad)};
+    bad->time = state.time;
+    warnOnce(state, describe(*bad));
+    return {std::move(bad)};
   }
   const auto start = std::chrono::steady_clock::now();
   long iterations = 0;
@@ -234,8 +246,9 @@ StepReport step(const Model& model, State& state) {
       state.rods = std::move(snapshot.rods);
       ++state.blowups;
       // A missed contact alone is not why a step is refused: the substeps' failure is.
-      if (first.status != StepStatus::Missed) report = first;
-      warnOnce(state, "step refused at t = " + std::to_string(state.time) + " s: " + report.message);
+      if (first.failure->kind != FailureKind::MissedContact) report = first;
+      report.failure->time = state.time;
+      warnOnce(state, describe(*report.failure));
     }
   }
   if (report.ok()) state.time += model.timeStep;

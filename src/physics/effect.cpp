@@ -1,4 +1,5 @@
 #include "physics/effect.h"
+#include "physics/failure.h"
 
 #include <stdexcept>
 
@@ -31,7 +32,7 @@ EffectRegistry& EffectRegistry::global() {
 }
 
 const Effect* EffectRegistry::add(std::unique_ptr<Effect> effect) {
-  if (find(effect->name())) throw std::invalid_argument("effect '" + std::string(effect->name()) + "' is registered twice");
+  if (find(effect->name())) throw PhysicsError(badDefinition("effect '" + std::string(effect->name()) + "'", "is registered twice"));
   effects_.push_back(std::move(effect));
   return effects_.back().get();
 }
@@ -53,7 +54,7 @@ EffectUse EffectRegistry::use(std::string_view name) const {
   if (!e) {
     std::string known;
     for (const auto& k : effects_) known += (known.empty() ? "" : ", ") + std::string(k->name());
-    throw std::invalid_argument("unknown effect '" + std::string(name) + "' (known: " + known + ")");
+    throw PhysicsError(badDefinition({}, "unknown effect '" + std::string(name) + "' (known: " + known + ")"));
   }
   EffectUse u;
   u.effect = e;

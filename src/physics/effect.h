@@ -142,11 +142,11 @@ class EffectRegistry {
  public:
   // The process-wide registry, with the built-in effects already added.
   static EffectRegistry& global();
-  // Takes ownership; throws std::invalid_argument if the name is taken.
+  // Takes ownership; throws PhysicsError (physics/failure.h) if the name is taken.
   const Effect* add(std::unique_ptr<Effect> effect);
   const Effect* find(std::string_view name) const;
   std::vector<const Effect*> all() const;
-  // An EffectUse with default values; throws std::invalid_argument naming
+  // An EffectUse with default values; throws PhysicsError (physics/failure.h) naming
   // the unknown effect and listing the known ones.
   EffectUse use(std::string_view name) const;
 

@@ -3,19 +3,19 @@
 // change only the State. A refused step leaves the rods as they were before
 // it; a static solve that fails leaves the last converged load increment
 // (what a user wants to look at), and its report says so (solveStatic).
+#include <optional>
 #include <string>
 
+#include "physics/failure.h"
 #include "physics/model.h"
 #include "physics/state.h"
 
 namespace coilsim {
 
-enum class StepStatus { Ok, BlowUp, SolverFailure, Missed };  // Missed: Effect::endStep
-
 struct StepReport {
-  StepStatus status = StepStatus::Ok;
-  std::string message;  // empty when Ok
-  bool ok() const { return status == StepStatus::Ok; }
+  std::optional<Failure> failure;  // why the step was refused (BlowUp, SolverFailure, MissedContact), with its time
+  bool ok() const { return !failure; }
+  std::string message() const { return failure ? failure->message() : std::string(); }
 };
 
 // One implicit Euler step of length model.timeStep (Baraff & Witkin 1998
@@ -39,11 +39,12 @@ struct StaticOptions {
 };
 
 struct StaticReport {
-  bool converged = false;
   int increments = 0;   // load increments taken (including bisected ones)
   int iterations = 0;   // Newton iterations in all
-  std::string message;  // why it failed: the rod, and where it was left
   double loadFactor = 0;  // of the last rod solved: the last converged increment (1 when converged)
+  std::optional<Failure> failure;  // why it failed (NotConverged): the rod, and where it was left
+  bool converged() const { return !failure; }
+  std::string message() const { return failure ? failure->message() : std::string(); }
 };
 
 // Static equilibrium under the full load (gravity, loads, effects), reached
@@ -66,7 +67,8 @@ struct Energy {
 };
 Energy computeEnergy(const Model& model, const State& state);
 
-// Empty when the state is healthy, else what is wrong (node and quantity).
-std::string checkHealth(const Model& model, const State& state);
+// Nothing when the state is healthy, else what is wrong (a BlowUp naming the
+// rod, node or beam, the quantity, its value and the limit).
+std::optional<Failure> checkHealth(const Model& model, const State& state);
 
 }  // namespace coilsim

@@ -111,7 +111,7 @@ struct Model {
 };
 
 // Builds element constants, lumped masses and placed rest shapes, and the
-// device's rods and constants (def.device). Throws std::invalid_argument
+// device's rods and constants (def.device). Throws PhysicsError (physics/failure.h)
 // naming the rod (or the deployment) and the quantity on a non-positive or
 // non-finite input, or a constraint/load on a missing node.
 Model compileModel(const ModelDef& def);

@@ -1,7 +1,8 @@
 #include "physics/rest_shape.h"
 
 #include <cmath>
-#include <stdexcept>
+
+#include "physics/failure.h"
 
 namespace coilsim {
 namespace {
@@ -30,7 +31,7 @@ std::vector<Vec3> resample(const std::vector<Vec3>& pts, double length, int beam
   std::vector<double> s(pts.size(), 0.0);
   for (size_t i = 1; i < pts.size(); ++i) s[i] = s[i - 1] + (pts[i] - pts[i - 1]).norm();
   const double total = s.back();
-  if (!(total > 0)) throw std::invalid_argument("polyline has zero length");
+  if (!(total > 0)) throw PhysicsError(badDefinition({}, "polyline has zero length"));
   std::vector<Vec3> out(beams + 1);
   size_t k = 0;
   for (int i = 0; i <= beams; ++i) {
@@ -96,7 +97,7 @@ RestCurve makeHelix(double length, int beams, double loopDiameter, double pitch,
 
 RestCurve makePolyline(const std::vector<Vec3>& points, double length, int beams, FrameRule rule,
                        double twistPerLength) {
-  if (points.size() < 2) throw std::invalid_argument("polyline needs at least 2 points");
+  if (points.size() < 2) throw PhysicsError(badDefinition({}, "polyline needs at least 2 points"));
   RestCurve c;
   c.points = resample(points, length, beams);
   const std::vector<Vec3> t = nodeTangents(c.points);
@@ -184,7 +185,7 @@ RestCurve makeRest(const RestShapeDef& rest, double length, int beams) {
     case RestShapeDef::Type::Polyline: return makePolyline(rest.points, length, beams, rest.frames, rest.twistPerLength);
     case RestShapeDef::Type::Birdcage: return makeBirdcage(length, beams, rest.sphereDiameter, rest.planeTurnPerLoop);
   }
-  throw std::invalid_argument("unknown rest shape type");
+  throw PhysicsError(badDefinition({}, "unknown rest shape type"));
 }
 
 }  // namespace coilsim

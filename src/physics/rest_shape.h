@@ -29,7 +29,7 @@ enum class FrameRule { Frenet, ParallelTransport };
 // Any centre line, given as points from the first node on; resampled at equal
 // arc length. Frenet frames need curvature everywhere (straight stretches fall
 // back to parallel transport); `twistPerLength` (rad/m) adds intrinsic twist.
-// Throws std::invalid_argument on fewer than 2 distinct points.
+// Throws PhysicsError (physics/failure.h) on fewer than 2 distinct points.
 RestCurve makePolyline(const std::vector<Vec3>& points, double length, int beams, FrameRule rule,
                        double twistPerLength);
 
@@ -53,7 +53,7 @@ struct RestShapeDef {
 };
 
 // Samples `rest` on a rod of `length` with `beams` beams, canonical (as the
-// makers above). Throws std::invalid_argument as they do.
+// makers above). Throws PhysicsError (physics/failure.h) as they do.
 RestCurve makeRest(const RestShapeDef& rest, double length, int beams);
 
 // Rigid placement of a canonical curve: first node at `position`, tangent

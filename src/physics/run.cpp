@@ -26,57 +26,69 @@ double advanceBy(double rate, double& left, double dt) {
   return d;
 }
 
+// A command the device does not allow; describe() says "refused: " first.
+Failure refusal(std::string why, const char* quantity = "", double value = NAN, double limit = NAN) {
+  Failure f;
+  f.kind = FailureKind::DeviceRefusal;
+  f.quantity = quantity, f.value = value, f.limit = limit;
+  f.text = std::move(why);
+  return f;
+}
+
 }  // namespace
 
-std::string command(const Model& model, State& state, const DeviceCommand& c) {
+std::optional<Failure> command(const Model& model, State& state, const DeviceCommand& c) {
   using K = DeviceCommand::Kind;
-  if (!model.device) return "refused: this run has no device to command";
+  if (!model.device) return refusal("this run has no device to command");
   const Deployment& dep = *model.device;
   const DeviceState& ds = state.device;
   DeviceMotion& m = state.device.motion;
   if (!std::isfinite(c.rate) || !std::isfinite(c.amount) || c.amount < 0)
-    return "refused: rate must be finite and amount finite and >= 0";
+    return refusal("rate must be finite and amount finite and >= 0");
   const bool coilMotion = c.kind == K::Push || c.kind == K::Pull || c.kind == K::Twist || c.kind == K::Detach;
-  if (coilMotion && ds.detached) return "refused: the coil is detached; it can no longer be pushed, pulled or twisted";
+  if (coilMotion && ds.detached) return refusal("the coil is detached; it can no longer be pushed, pulled or twisted");
   switch (c.kind) {
     case K::Push:
     case K::Pull: {
       if (!(c.rate > 0) || c.rate > dep.maxPushSpeed)
-        return "refused: push/pull speed must be in (0, " + mm(dep.maxPushSpeed) + "/s]";
+        return refusal("push/pull speed must be in (0, " + mm(dep.maxPushSpeed) + "/s]", "push speed", c.rate,
+                       dep.maxPushSpeed);
       const bool push = c.kind == K::Push;
-      if (push && ds.deployed >= dep.coilLength - 1e-12) return "refused: the coil is fully deployed";
-      if (!push && ds.deployed <= 0) return "refused: the coil is fully inside the catheter";
+      if (push && ds.deployed >= dep.coilLength - 1e-12) return refusal("the coil is fully deployed");
+      if (!push && ds.deployed <= 0) return refusal("the coil is fully inside the catheter");
       if (push && c.amount > dep.coilLength - ds.deployed + 1e-12)
-        return "refused: pushing " + mm(c.amount) + " would pass the coil's end (" + mm(dep.coilLength - ds.deployed) +
-               " left)";
+        return refusal("pushing " + mm(c.amount) + " would pass the coil's end (" + mm(dep.coilLength - ds.deployed) +
+               " left)");
       if (!push && c.amount > ds.deployed + 1e-12)
-        return "refused: pulling " + mm(c.amount) + " is more than the " + mm(ds.deployed) + " outside";
+        return refusal("pulling " + mm(c.amount) + " is more than the " + mm(ds.deployed) + " outside");
       m.pushRate = push ? c.rate : -c.rate;
       m.pushLeft = c.amount > 0 ? c.amount : -1;
-      return {};
+      return std::nullopt;
     }
     case K::Twist:
-      if (c.rate == 0 || std::abs(c.rate) > dep.maxTwistRate) return "refused: twist rate must be non-zero and within the limit";
+      if (c.rate == 0 || std::abs(c.rate) > dep.maxTwistRate) return refusal("twist rate must be non-zero and within the limit", "twist rate", c.rate,
+                                                                     dep.maxTwistRate);
       m.twistRate = c.rate;
       m.twistLeft = c.amount > 0 ? c.amount : -1;
-      return {};
+      return std::nullopt;
     case K::Stop:
       m.pushRate = m.twistRate = m.retractRate = 0;
-      return {};
+      return std::nullopt;
     case K::Detach:
       if (ds.deployed < dep.coilLength - 1e-9)
-        return "refused: the coil is not fully out (" + mm(ds.deployed) + " of " + mm(dep.coilLength) +
-               "): push it out before detaching";
+        return refusal("the coil is not fully out (" + mm(ds.deployed) + " of " + mm(dep.coilLength) +
+               "): push it out before detaching");
       m.pendingDetach = true;
-      return {};
+      return std::nullopt;
     case K::Retract:
       if (!(c.rate > 0) || c.rate > dep.maxPushSpeed)
-        return "refused: retraction speed must be in (0, " + mm(dep.maxPushSpeed) + "/s]";
+        return refusal("retraction speed must be in (0, " + mm(dep.maxPushSpeed) + "/s]", "retraction speed", c.rate,
+                       dep.maxPushSpeed);
       m.retractRate = c.rate;
       m.retractLeft = c.amount > 0 ? c.amount : -1;
-      return {};
+      return std::nullopt;
   }
-  return "refused: unknown command";
+  return refusal("unknown command");
 }
 
 void moveDevice(const Model& model, State& state) {
@@ -152,8 +164,8 @@ TimelineRun runTimeline(const Model& model, State& state, const std::vector<Time
   for (long s = 0; s < steps; ++s) {
     const double t = s * dt;
     while (next < timeline.size() && timeline[next].time <= t + 1e-9 * dt) {
-      const std::string why = command(model, state, timeline[next].command);
-      if (!why.empty()) run.log.push_back("t = " + std::to_string(timeline[next].time) + " s: " + why);
+      if (const std::optional<Failure> no = command(model, state, timeline[next].command))
+        run.log.push_back("t = " + std::to_string(timeline[next].time) + " s: " + describe(*no));
       ++next;
     }
     const StepReport rep = advance(model, state);
@@ -161,8 +173,7 @@ TimelineRun runTimeline(const Model& model, State& state, const std::vector<Time
     state.device.notes.clear();
     ++run.steps;
     if (!rep.ok()) {
-      run.log.push_back("t = " + std::to_string(t) + " s: step refused: " + rep.message);
-      run.ok = false;
+      run.failure = rep.failure;
       break;
     }
     if (keepGoing && !keepGoing()) {

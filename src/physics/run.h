@@ -7,19 +7,22 @@
 // one against what the real device allows and sets it on the State, to act
 // from the next advance().
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "physics/device.h"
+#include "physics/failure.h"
 #include "physics/integrator.h"
 #include "physics/model.h"
 #include "physics/state.h"
 
 namespace coilsim {
 
-// Starts the command on the run's device; returns "" or why it was refused
-// (and then changes nothing). A model without a device refuses every command.
-std::string command(const Model& model, State& state, const DeviceCommand& c);
+// Starts the command on the run's device; returns nothing, or why it was
+// refused (a DeviceRefusal; then nothing changes). A model without a device
+// refuses every command.
+std::optional<Failure> command(const Model& model, State& state, const DeviceCommand& c);
 
 // Moves the device by model.timeStep (pushes, twists, retraction, a pending
 // detach; limits reached are added to state.device.notes), then steps the
@@ -34,15 +37,17 @@ void moveDevice(const Model& model, State& state);
 
 // Runs a timeline: commands are applied at the first step whose start time
 // (step index * dt) is at or after their time, so a replay is bit-for-bit.
-// Stops after `duration` s. Refused commands and refused steps are reported
-// in `log`; `ok` is false if a step was refused (numerical blow-up).
+// Stops after `duration` s. Refused commands ("t = 2.000000 s: refused: why")
+// and the device's notes are reported in `log`; a refused step ends the run
+// and is its `failure`.
 // `keepGoing`, when given, is asked after each step (a front end's progress
 // and Ctrl-C); false ends the run there with `stopped` set.
 struct TimelineRun {
   std::vector<std::string> log;
   long steps = 0;
-  bool ok = true;
+  std::optional<Failure> failure;  // the refused step that ended the run
   bool stopped = false;
+  bool ok() const { return !failure; }
 };
 TimelineRun runTimeline(const Model& model, State& state, const std::vector<TimedCommand>& timeline, double duration,
                         const std::function<bool()>& keepGoing = {});

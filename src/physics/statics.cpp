@@ -213,6 +213,18 @@ NewtonResult newton(const Model& model, int k, State& state, double lambda, cons
   return NewtonResult::NotConverged;
 }
 
+// A rod left short of equilibrium: the load factor it was left at, of 1.
+Failure notConverged(const std::string& rod, std::string text, double loadFactor) {
+  Failure f;
+  f.kind = FailureKind::NotConverged;
+  f.rod = rod;
+  f.quantity = "load factor";
+  f.value = loadFactor;
+  f.limit = 1;
+  f.text = std::move(text);
+  return f;
+}
+
 }  // namespace
 
 StaticReport solveStatic(const Model& model, State& state, const StaticOptions& o) {
@@ -222,7 +234,7 @@ StaticReport solveStatic(const Model& model, State& state, const StaticOptions& 
   // bad one solved and their velocities zeroed).
   for (size_t k = 0; k < model.rods.size(); ++k)
     if (state.rods[k].active && model.rods[k].constraints.empty()) {
-      rep.message = "rod '" + model.rods[k].name + "' has no constraint: its static equilibrium is not defined";
+      rep.failure = notConverged(model.rods[k].name, "no constraint holds it, so its static equilibrium is not defined", 0);
       return rep;
     }
   for (size_t k = 0; k < model.rods.size(); ++k) {
@@ -242,7 +254,7 @@ StaticReport solveStatic(const Model& model, State& state, const StaticOptions& 
       const std::vector<Quat> q0 = r.q;
       const NewtonResult res = newton(model, int(k), state, next, o, rep.iterations);
       ++rep.increments;
-      if (res == NewtonResult::Converged && checkHealth(model, state).empty()) {
+      if (res == NewtonResult::Converged && !checkHealth(model, state)) {
         lambda = next;
         rep.loadFactor = lambda;
         continue;
@@ -250,18 +262,19 @@ StaticReport solveStatic(const Model& model, State& state, const StaticOptions& 
       r.x = x0, r.q = q0;
       const std::string kept = "; it is left at load factor " + std::to_string(lambda);
       if (res == NewtonResult::Singular) {
-        rep.message = "rod '" + rm.name + "': stiffness matrix is singular (is the rod held enough?)" + kept;
+        rep.failure = notConverged(rm.name, "stiffness matrix is singular (is the rod held enough?)" + kept, lambda);
         return rep;
       }
       if (++bisections > o.maxBisections) {
-        rep.message = "rod '" + rm.name + "': Newton did not converge at load factor " + std::to_string(next) +
-                      " after " + std::to_string(o.maxBisections) + " bisections of the load increment" + kept;
+        rep.failure = notConverged(rm.name,
+                                   "Newton did not converge at load factor " + std::to_string(next) + " after " +
+                                       std::to_string(o.maxBisections) + " bisections of the load increment" + kept,
+                                   lambda);
         return rep;
       }
       increment *= 0.5;
     }
   }
-  rep.converged = true;
   rep.loadFactor = 1;
   return rep;
 }

@@ -80,10 +80,10 @@ AutoDeployResult autoDeploy(const Model& model, State& state, const AutoDeployOp
   int twistsHere = 0, pullBacksHere = 0;
   double progressMark = ds.deployed;  // deployed length at the last pull-back reset
   auto issue = [&](double t, const DeviceCommand& c) {
-    const std::string why = command(model, state, c);
-    if (!why.empty()) r.log.push_back(sText(t) + ": " + why);
+    const std::optional<Failure> refused = command(model, state, c);
+    if (refused) r.log.push_back(sText(t) + ": " + describe(*refused));
     else r.timeline.push_back({t, c});
-    return why.empty();
+    return !refused;
   };
   auto stroke = [&](double t) {
     const double left = dep.coilLength - ds.deployed;
@@ -122,7 +122,7 @@ AutoDeployResult autoDeploy(const Model& model, State& state, const AutoDeployOp
     ++r.steps;
     if (!rep.ok()) {
       r.ok = false;
-      r.error = "step refused at " + sText(t) + ": " + rep.message;
+      r.error = "step refused at " + sText(t) + ": " + rep.message();
       r.time = t, r.deployed = ds.deployed;
       return r;
     }

@@ -44,17 +44,17 @@ PracticeSession::PracticeSession(const PracticeCase& pc, const std::string& coil
 std::string PracticeSession::command(const DeviceCommand& c) {
   // The numbers a replay of the recording will read, so it replays exactly.
   const DeviceCommand read = asRecorded(c);
-  const std::string why = coilsim::command(model_, state_, read);
-  if (why.empty()) scorer_->commandAccepted(time(), commandJson({time(), c}), read);
-  else note(why);
-  return why;
+  const std::optional<Failure> refused = coilsim::command(model_, state_, read);
+  if (!refused) scorer_->commandAccepted(time(), commandJson({time(), c}), read);
+  else note(describe(*refused));
+  return refused ? describe(*refused) : std::string();
 }
 
 std::string PracticeSession::replayCommand(const DeviceCommand& c) {
-  const std::string why = coilsim::command(model_, state_, c);
-  if (why.empty()) scorer_->commandAccepted(time(), commandJson({time(), c}), c);
-  else note(why);
-  return why;
+  const std::optional<Failure> refused = coilsim::command(model_, state_, c);
+  if (!refused) scorer_->commandAccepted(time(), commandJson({time(), c}), c);
+  else note(describe(*refused));
+  return refused ? describe(*refused) : std::string();
 }
 
 void PracticeSession::setView(const std::string& view) { scorer_->viewChanged(time(), view); }
@@ -66,7 +66,7 @@ bool PracticeSession::step() {
   for (const std::string& n : state_.device.notes) note(n);
   state_.device.notes.clear();
   ++steps_;
-  scorer_->afterStep(model_, state_, rep.ok(), rep.message);
+  scorer_->afterStep(model_, state_, rep.ok(), rep.message());
   return rep.ok();
 }
 

@@ -84,16 +84,17 @@ std::string Session::command(const DeviceCommand& c) {
   }
   // The observer (a recorder) may round the command to what its file holds.
   const DeviceCommand applied = observer_ ? observer_->adjust(c) : c;
-  const std::string why = coilsim::command(model_, state_, applied);
-  if (!why.empty()) note(why);
+  const std::optional<Failure> refused = coilsim::command(model_, state_, applied);
+  if (refused) note(describe(*refused));
   else if (observer_) observer_->accepted(deviceTime(), c, applied);
-  return why;
+  return refused ? describe(*refused) : std::string();
 }
 
 std::string Session::wouldRefuse(const DeviceCommand& c) const {
   if (!model_.device) return "refused: this scene has no deployment (no coil in a catheter to drive)";
   State scratch = state_;
-  return coilsim::command(model_, scratch, observer_ ? observer_->adjust(c) : c);
+  const std::optional<Failure> refused = coilsim::command(model_, scratch, observer_ ? observer_->adjust(c) : c);
+  return refused ? describe(*refused) : std::string();
 }
 
 // What runTimeline does before each step, in the same order, so that a
@@ -110,8 +111,8 @@ void Session::giveInputs() {
     else setView(in.view);
   }
   while (timelineNext_ < timeline.size() && timeline[timelineNext_].time <= t + 1e-9 * dt) {
-    const std::string why = coilsim::command(model_, state_, timeline[timelineNext_].command);
-    if (!why.empty()) note("timeline /commands/" + std::to_string(timelineNext_) + ": " + why);
+    if (const std::optional<Failure> refused = coilsim::command(model_, state_, timeline[timelineNext_].command))
+      note("timeline /commands/" + std::to_string(timelineNext_) + ": " + describe(*refused));
     ++timelineNext_;
   }
 }
@@ -125,10 +126,10 @@ bool Session::stepAndCheck() {
   const StepReport r = coilsim::advance(model_, state_);
   for (const std::string& n : state_.device.notes) note(n);
   state_.device.notes.clear();
-  if (observer_) observer_->afterStep(model_, state_, r.ok(), r.message);
+  if (observer_) observer_->afterStep(model_, state_, r.ok(), r.message());
   if (!r.ok()) {
     // step() restored the state; stepping again would fail the same way.
-    haltMessage_ = "step refused at t = " + std::to_string(state_.time) + " s: " + r.message;
+    haltMessage_ = describe(*r.failure);
     playing_ = false;
     return false;
   }
@@ -142,8 +143,9 @@ StepReport Session::stepOnce() {
   refreshDrawData();
   StepReport r;
   if (steps_ == before) {
-    r.status = StepStatus::BlowUp;
-    r.message = haltMessage_;
+    r.failure = Failure{};
+    r.failure->kind = FailureKind::BlowUp;
+    r.failure->text = haltMessage_;
   }
   return r;
 }
@@ -187,7 +189,7 @@ FrameAdvance Session::advance(double realDt, const std::function<double()>& now)
 
 void Session::refreshDrawData() {
   // A state that fails the health check keeps the previous picture.
-  if (!checkHealth(model_, state_).empty()) {
+  if (checkHealth(model_, state_)) {
     stale_ = true;
     return;
   }

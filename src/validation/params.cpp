@@ -12,40 +12,40 @@ namespace {
 
 // A rod quantity identification may fit: its declaration (physics/
 // rod_quantities.h: fit name = scene key, unit, SI factor, physical bounds),
-// the name --fit knew it by before, where ModelParams holds it, and what a
-// fit searches: a band narrower than the physical bounds around the file's
-// value, and the prior (params.h).
+// the name --fit knew it by before, where the coil's RodSpec holds it, and
+// what a fit searches: a band narrower than the physical bounds around the
+// file's value, and the prior (params.h).
 struct RodFit {
   const rodq::Quantity* quantity;
   std::string_view oldName;
-  double ModelParams::*value;
+  double& (*value)(RodSpec& coil);
   bool helixOnly;
   void (*band)(const ModelParams& p, const Measurement& m, FitParam& f);
 };
 
 const RodFit kRodFits[] = {
-    {&rodq::kYoungModulus, "young_modulus", &ModelParams::youngModulus, false,
+    {&rodq::kYoungModulus, "young_modulus", [](RodSpec& c) -> double& { return c.youngModulus; }, false,
      [](const ModelParams& p, const Measurement& m, FitParam& f) {
-       const double e0 = m.coil.youngModulus > 0 ? m.coil.youngModulus : p.youngModulus;
+       const double e0 = m.coil.youngModulus > 0 ? m.coil.youngModulus : p.coil.youngModulus;
        f.prior = {e0 > 0, e0, 0.5 * e0, 2.0 * e0};
      }},
     // Metals: 0.28-0.42 (platinum 0.39, nitinol 0.33).
-    {&rodq::kPoissonRatio, "", &ModelParams::poissonRatio, false,
+    {&rodq::kPoissonRatio, "", [](RodSpec& c) -> double& { return c.poissonRatio; }, false,
      [](const ModelParams&, const Measurement& m, FitParam& f) {
        f.lo = 0.0, f.hi = 0.5;
        f.prior = {true, m.coil.poissonRatio, 0.28, 0.42};
      }},
     // Shape-set loops relax or tighten a little after heat setting: +-15 %.
-    {&rodq::kLoopDiameter, "loop_diameter", &ModelParams::loopDiameter, true,
+    {&rodq::kLoopDiameter, "loop_diameter", [](RodSpec& c) -> double& { return c.rest.loopDiameter; }, true,
      [](const ModelParams& p, const Measurement& m, FitParam& f) {
        const double d0 = m.coil.rest.loopDiameter;
-       f.lo = 0.5 * p.loopDiameter, f.hi = 2.0 * p.loopDiameter;
+       f.lo = 0.5 * p.coil.rest.loopDiameter, f.hi = 2.0 * p.coil.rest.loopDiameter;
        f.prior = {true, d0, 0.85 * d0, 1.15 * d0};
      }},
-    {&rodq::kPitch, "pitch", &ModelParams::pitch, true,
+    {&rodq::kPitch, "pitch", [](RodSpec& c) -> double& { return c.rest.pitch; }, true,
      [](const ModelParams& p, const Measurement& m, FitParam& f) {
        const double h0 = m.coil.rest.pitch;
-       f.lo = 0.0, f.hi = 3.0 * p.pitch + 1e-3;
+       f.lo = 0.0, f.hi = 3.0 * p.coil.rest.pitch + 1e-3;
        f.prior = {true, h0, std::max(0.0, 0.85 * h0 - 0.1e-3), 1.15 * h0 + 0.1e-3};
      }},
 };
@@ -136,7 +136,10 @@ double priorDeviation(const FitParam& f, double v) {
 }
 
 double getParam(const ModelParams& p, const std::string& name) {
-  if (const RodFit* r = rodFit(name)) return p.*(r->value);
+  if (const RodFit* r = rodFit(name)) {
+    RodSpec coil = p.coil;  // value() needs a RodSpec it could write to: read a copy
+    return r->value(coil);
+  }
   size_t k = 0;
   if (const EffectUse* e = effectParam(p, name, k)) return e->values[k];
   throw std::invalid_argument("unknown parameter " + name);
@@ -144,7 +147,7 @@ double getParam(const ModelParams& p, const std::string& name) {
 
 void setParam(ModelParams& p, const std::string& name, double v) {
   if (const RodFit* r = rodFit(name)) {
-    p.*(r->value) = v;
+    r->value(p.coil) = v;
     return;
   }
   size_t k = 0;

@@ -28,13 +28,9 @@ Built build(const Measurement& m, const ModelParams& p, int beams, double timeSt
     def.effects.push_back(e);
     compliant = compliant || (e.enabled && releasesClamp(e));
   }
-  const RodSpec coil = coilWith(m.coil, p);
   DeploymentDef d;
-  d.coilLength = coil.length;
+  d.coil = p.coil;
   d.coilBeams = beams;
-  d.coilRest = makeRest(coil.rest, coil.length, beams);
-  d.coilMaterial = materialOf(coil);
-  d.coilSection = sectionOf(coil);
   d.tip = m.tip;
   d.maxPushSpeed = 1e9, d.maxTwistRate = 1e9;  // the file's history is what happened
   // A compliant catheter: the tip node hangs on the catheter_compliance spring instead of the rigid clamp.
@@ -65,14 +61,14 @@ std::string pushStatic(const Built& b, State& s, double target, double twist, do
     const State saved = s;
     slideDeployment(b.model, s, next, twist);
     const StaticReport r = solveWithEffects(b, s);
-    if (r.converged) {
+    if (r.converged()) {
       inc = std::min(step, inc * 2);
       continue;
     }
     s = saved;
     inc *= 0.5;
     if (inc < 1e-3 * step)
-      return "static equilibrium not reached while pushing to " + std::to_string(next * 1e3) + " mm: " + r.message;
+      return "static equilibrium not reached while pushing to " + std::to_string(next * 1e3) + " mm: " + r.message();
   }
   return {};
 }
@@ -108,10 +104,8 @@ StageSim collect(const Built& b, const State& s) {
 
 ModelParams ModelParams::nominal(const Measurement& m) {
   ModelParams p;
-  p.youngModulus = m.coil.youngModulus > 0 ? m.coil.youngModulus : 10e9;
-  p.poissonRatio = m.coil.poissonRatio;
-  p.loopDiameter = m.coil.rest.loopDiameter;
-  p.pitch = m.coil.rest.pitch;
+  p.coil = m.coil;
+  if (!(p.coil.youngModulus > 0)) p.coil.youngModulus = 10e9;
   return p;
 }
 
@@ -124,14 +118,6 @@ const EffectUse* ModelParams::effect(std::string_view name) const {
   for (const EffectUse& e : effects)
     if (e.name() == name) return &e;
   return nullptr;
-}
-
-RodSpec coilWith(const RodSpec& coil, const ModelParams& p) {
-  RodSpec out = coil;
-  out.youngModulus = p.youngModulus;
-  out.poissonRatio = p.poissonRatio;
-  if (out.rest.type == RestShapeDef::Type::Helix) out.rest.loopDiameter = p.loopDiameter, out.rest.pitch = p.pitch;
-  return out;
 }
 
 StageSimulator::StageSimulator(const Measurement& m, const SimOptions& o) : m_(m), options_(o) {
@@ -171,7 +157,7 @@ std::vector<StageSim> StageSimulator::run(const ModelParams& p, bool warmStart) 
         std::copy(c.x.begin(), c.x.end(), chain.x.begin());
         std::copy(c.q.begin(), c.q.end(), chain.q.begin());
         const StaticReport r = solveWithEffects(b, w);
-        if (r.converged) {
+        if (r.converged()) {
           out[i] = collect(b, w);
           c.x.assign(chain.x.begin(), chain.x.begin() + chain.activeNodes);
           c.q.assign(chain.q.begin(), chain.q.begin() + chain.activeNodes);
@@ -211,7 +197,7 @@ std::vector<StageSim> StageSimulator::run(const ModelParams& p, bool warmStart) 
       // The file's push history drives the device (not commands): set, then advance.
       setDeployment(b.model, d, l, tw);
       const StepReport r = advance(b.model, d);
-      if (!r.ok()) err = "dynamic push failed at t = " + std::to_string(t) + " s: " + r.message;
+      if (!r.ok()) err = "dynamic push failed at t = " + std::to_string(t) + " s: " + r.message();
     }
     if (!err.empty()) {
       out[i].message = err;

@@ -25,13 +25,10 @@ namespace coilsim::validation {
 
 // The model's parameters, SI: what identification may change.
 struct ModelParams {
-  double youngModulus = 0;   // Pa
-  double poissonRatio = 0.3;
-  double loopDiameter = 0;   // m (helix rest shapes)
-  double pitch = 0;          // m (helix rest shapes)
+  RodSpec coil;  // the measurement's coil; a fit changes its rod quantities (validation/params.cpp, kRodFits)
   std::vector<EffectUse> effects;  // switched on beyond gravity, with their values
 
-  // The file's nominal values; effects none.
+  // The file's coil (Young's modulus 10 GPa when the file gives none); effects none.
   static ModelParams nominal(const Measurement& m);
   EffectUse* effect(std::string_view name);
   const EffectUse* effect(std::string_view name) const;
@@ -69,9 +66,5 @@ class StageSimulator {
   int beams_ = 0;
   std::vector<Cache> cache_;  // (stages) last equilibrium, for warm starts
 };
-
-// The measurement's coil with the parameters `p` (Young's modulus, Poisson's
-// ratio and, for a helix, loop diameter and pitch) in place of the file's.
-RodSpec coilWith(const RodSpec& coil, const ModelParams& p);
 
 }  // namespace coilsim::validation

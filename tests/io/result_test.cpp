@@ -73,7 +73,7 @@ TEST(Result, StaticRunsReportTheSolver) {
   State s = makeState(m);
   RunRecord run;
   run.solve = SolveMode::Static;
-  run.statics = StaticReport{true, 4, 9, ""};
+  run.statics = StaticReport{4, 9, 1.0, std::nullopt};  // converged: no failure
   const nlohmann::ordered_json j = resultJson(m, s, run);
   EXPECT_EQ(j["solve"], "static");
   EXPECT_EQ(j["static"]["converged"], true);

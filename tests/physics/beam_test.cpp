@@ -50,7 +50,7 @@ Cantilever solveCantilever(double length, int beams, const Section& section, con
   Cantilever c{compileModel(modelOf({r})), {}, beams};
   c.state = makeState(c.model);
   const StaticReport rep = solveStatic(c.model, c.state, tightStatic(1));
-  EXPECT_TRUE(rep.converged) << rep.message;
+  EXPECT_TRUE(rep.converged()) << rep.message();
   return c;
 }
 

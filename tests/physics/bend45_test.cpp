@@ -38,7 +38,7 @@ Vec3 tipUnder(double load) {
   const Model m = compileModel(modelOf({bend45Rod(kBeams, load)}));
   State st = makeState(m);
   const StaticReport rep = solveStatic(m, st, tightStatic(20));
-  EXPECT_TRUE(rep.converged) << "P = " << load << ": " << rep.message;
+  EXPECT_TRUE(rep.converged()) << "P = " << load << ": " << rep.message();
   return st.rods[0].x[kBeams];
 }
 

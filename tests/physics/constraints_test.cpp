@@ -51,7 +51,7 @@ Supported centralLoad(unsigned mask0, unsigned maskN) {
   const Model m = compileModel(modelOf({r}));
   State s = makeState(m);
   const StaticReport rep = solveStatic(m, s, tightStatic(1));
-  EXPECT_TRUE(rep.converged) << rep.message;
+  EXPECT_TRUE(rep.converged()) << rep.message();
   return {-s.rods[0].x[kMid].z(), s.rods[0].q[0].angularDistance(Quat::Identity())};
 }
 
@@ -158,7 +158,7 @@ TEST(ConstraintsTest, StaticSolveFollowsARigidlyMovedClamp) {
   State s = makeState(m);
   advanceTargets(m, s, 1.0);
   const StaticReport rep = solveStatic(m, s, tightStatic(1));
-  ASSERT_TRUE(rep.converged) << rep.message;
+  ASSERT_TRUE(rep.converged()) << rep.message();
   const Quat r = quatExp(w);
   double worstPos = 0, worstFrame = 0;
   for (int i = 0; i <= kBeams; ++i) {

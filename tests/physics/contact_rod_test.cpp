@@ -14,6 +14,8 @@
 #include "physics/deployment.h"
 #include "physics/run.h"
 #include "physics/integrator.h"
+#include "support/coil_spec.h"
+#include "support/refusal.h"
 #include "support/meshes.h"
 #include "support/known_bugs.h"
 #include "support/rod_models.h"
@@ -37,11 +39,8 @@ struct TwoCoils {
 DeploymentDef coilDef(const char* name, double loop, const Vec3& tip) {
   DeploymentDef d;
   d.coilName = name;
-  d.coilLength = kLength;
+  d.coil = test::wireSpec(kLength, test::helixRest(loop, 0.4e-3), 7.5e9, test::kPlatinumPoisson, 21450, kRadius);
   d.coilBeams = 50;
-  d.coilRest = makeHelix(kLength, d.coilBeams, loop, 0.4e-3, true);
-  d.coilMaterial = test::platinum();
-  d.coilSection = circularSection(kRadius, test::kPlatinumPoisson);
   d.tip.position = tip;
   d.tip.direction = Vec3(0, 0, 1);
   d.tip.normal = Vec3(1, 0, 0);
@@ -105,9 +104,9 @@ SecondDeployment deployBoth(bool rodContact) {
     }
   };
   const int push = int(kLength / kSpeed / dt);
-  EXPECT_EQ(command(c->model, c->state, {DeviceCommand::Kind::Push, kSpeed, kLength}), "");
+  EXPECT_EQ(coilsim::test::refusal(command(c->model, c->state, {DeviceCommand::Kind::Push, kSpeed, kLength})), "");
   run(c->model, push + 100, false);
-  EXPECT_EQ(command(c->model, c->state, {DeviceCommand::Kind::Detach, 0, 0}), "");
+  EXPECT_EQ(coilsim::test::refusal(command(c->model, c->state, {DeviceCommand::Kind::Detach, 0, 0})), "");
   run(c->model, 200, false);
   EXPECT_TRUE(c->state.device.detached);
   // The control switches coil-coil contact off for the second coil only (the
@@ -115,7 +114,7 @@ SecondDeployment deployBoth(bool rodContact) {
   for (EffectUse& u : c->modelSecond.effects)
     if (u.name() == "rod_contact") u.enabled = rodContact;
   c->state.device = c->second0;
-  EXPECT_EQ(command(c->modelSecond, c->state, {DeviceCommand::Kind::Push, kSpeed, kLength}), "");
+  EXPECT_EQ(coilsim::test::refusal(command(c->modelSecond, c->state, {DeviceCommand::Kind::Push, kSpeed, kLength})), "");
   run(c->modelSecond, push + 200, true);
   EXPECT_DOUBLE_EQ(c->state.device.deployed, kLength);
   return out;

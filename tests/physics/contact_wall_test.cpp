@@ -17,6 +17,8 @@
 #include "physics/deployment.h"
 #include "physics/run.h"
 #include "physics/integrator.h"
+#include "support/coil_spec.h"
+#include "support/refusal.h"
 #include "support/meshes.h"
 #include "support/rod_models.h"
 
@@ -175,11 +177,8 @@ std::unique_ptr<Cavity> cavityDeployment(double coilLength, int beams, bool wall
   def.effects.back().enabled = self;
   def.obstacles.push_back(obstacleOf(c->mesh));
   DeploymentDef d;
-  d.coilLength = coilLength;
+  d.coil = test::wireSpec(coilLength, test::helixRest(6e-3, 0.4e-3), 7.5e9, test::kPlatinumPoisson, 21450, wire);
   d.coilBeams = beams;
-  d.coilRest = makeHelix(coilLength, beams, 6e-3, 0.4e-3, true);
-  d.coilMaterial = test::platinum();
-  d.coilSection = circularSection(wire, test::kPlatinumPoisson);
   d.tip.position = Vec3(0, 0, -2.5e-3);
   d.tip.direction = Vec3(0, 0, 1);
   d.tip.normal = Vec3(1, 0, 0);
@@ -218,7 +217,7 @@ struct CavityPush {
 CavityPush pushIntoCavity(Cavity& c, double length) {
   CavityPush out;
   const test::ConvexCavity planes(c.mesh);
-  out.refused = command(c.model, c.state, {DeviceCommand::Kind::Push, 0.01, length});
+  out.refused = coilsim::test::refusal(command(c.model, c.state, {DeviceCommand::Kind::Push, 0.01, length}));
   const double dt = c.model.timeStep;
   out.planned = int(length / 0.01 / dt) + 300;
   for (; out.refused.empty() && out.steps < out.planned; ++out.steps) {
@@ -245,8 +244,8 @@ TEST(WallContactTest, DetectionFromLastStepFindsExactlyTheFreshQuerysContacts) {
   auto c = cavityDeployment(length, 30, true, true);
   State fresh = c->state;
   fresh.contactScratch.coherentWall = false;
-  ASSERT_EQ(command(c->model, c->state, {DeviceCommand::Kind::Push, 0.01, length}), "");
-  ASSERT_EQ(command(c->model, fresh, {DeviceCommand::Kind::Push, 0.01, length}), "");
+  ASSERT_EQ(coilsim::test::refusal(command(c->model, c->state, {DeviceCommand::Kind::Push, 0.01, length})), "");
+  ASSERT_EQ(coilsim::test::refusal(command(c->model, fresh, {DeviceCommand::Kind::Push, 0.01, length})), "");
   long contacts = 0;
   for (int i = 0; i < int(length / 0.01 / c->model.timeStep) + 200; ++i) {
     ASSERT_TRUE(advance(c->model, c->state).ok()) << "step " << i;
@@ -348,7 +347,7 @@ TEST(WallContactTest, AThickStiffWireIsHeldByTheDefaultWall) {
 TEST(WallContactTest, SwitchedOffTheCoilLeavesTheCavity) {
   const double length = 0.02;
   auto c = cavityDeployment(length, 40, false, false);
-  ASSERT_EQ(command(c->model, c->state, {DeviceCommand::Kind::Push, 0.01, length}), "");
+  ASSERT_EQ(coilsim::test::refusal(command(c->model, c->state, {DeviceCommand::Kind::Push, 0.01, length})), "");
   const double dt = c->model.timeStep;
   for (int i = 0; i < int(length / 0.01 / dt); ++i) {
     ASSERT_TRUE(advance(c->model, c->state).ok());

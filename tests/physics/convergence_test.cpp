@@ -51,7 +51,7 @@ TEST(ConvergenceTest, SelfWeightSagConvergesAtSecondOrderWithTheLumpingConstant)
     const Model m = compileModel(modelOf({clamped(straightRod(length, n, steel(), s))}, {"gravity"}, g));
     State st = makeState(m);
     const StaticReport rep = solveStatic(m, st, tightStatic(1));
-    ASSERT_TRUE(rep.converged) << rep.message;
+    ASSERT_TRUE(rep.converged()) << rep.message();
     errors.push_back((-st.rods[0].x[n].z() - (bending + shear)) / bending);
   }
   for (size_t k = 0; k < errors.size(); ++k) {
@@ -80,7 +80,7 @@ TEST(ConvergenceTest, LargeDeflectionConvergesAtSecondOrder) {
     const Model m = compileModel(modelOf({r}));
     State st = makeState(m);
     const StaticReport rep = solveStatic(m, st, tightStatic(6));
-    ASSERT_TRUE(rep.converged) << rep.message;
+    ASSERT_TRUE(rep.converged()) << rep.message();
     const Vec3 x = st.rods[0].x[n], t = tangentOf(st.rods[0].q[n]);
     errU.push_back(1.0 - x.x() - ref.horizontal);
     errW.push_back(-x.z() - ref.vertical);
@@ -103,7 +103,7 @@ TEST(ConvergenceTest, CurvedRodUnderOutOfPlaneLoadConvergesAtSecondOrder) {
     const Model m = compileModel(modelOf({bend45Rod(n, 600.0)}));
     State st = makeState(m);
     const StaticReport rep = solveStatic(m, st, tightStatic(20));
-    ASSERT_TRUE(rep.converged) << rep.message;
+    ASSERT_TRUE(rep.converged()) << rep.message();
     tips.push_back(st.rods[0].x[n]);
   }
   // From n = 16 the next term is ~20 % of the leading one (x converges from

@@ -10,7 +10,10 @@
 #include <cstdio>
 #include <cstring>
 
+#include "support/coil_spec.h"
+#include "support/refusal.h"
 #include "physics/deployment.h"
+#include "physics/failure.h"
 #include "physics/run.h"
 #include "physics/integrator.h"
 
@@ -33,11 +36,8 @@ Bench makeBench(bool gravity, double alpha = 20.0, double initial = 0.0, double 
   def.damping.massCoeff = alpha;
   def.timeStep = 1e-3;
   DeploymentDef d;
-  d.coilLength = kLength;
+  d.coil = test::wireSpec(kLength, test::helixRest(kLoop, kPitch), young, 0.39, 21450, 0.15e-3);
   d.coilBeams = kBeams;
-  d.coilRest = makeHelix(kLength, kBeams, kLoop, kPitch, true);
-  d.coilMaterial = {young, shearModulusOf(young, 0.39), 21450};
-  d.coilSection = circularSection(0.15e-3, 0.39);
   d.tip.position = Vec3(0.001, 0.002, 0.003);
   d.tip.direction = Vec3(1, 0, 0);
   d.tip.normal = Vec3(0, 0, 1);
@@ -53,7 +53,7 @@ Bench makeBench(bool gravity, double alpha = 20.0, double initial = 0.0, double 
 
 void run(Bench& b, const std::vector<TimedCommand>& commands, double seconds) {
   const TimelineRun r = runTimeline(b.model, b.state, commands, seconds);
-  ASSERT_TRUE(r.ok) << (r.log.empty() ? "" : r.log.back());
+  ASSERT_TRUE(r.ok()) << r.failure->message();
 }
 
 TimedCommand push(double t, double speed, double distance) {
@@ -116,7 +116,7 @@ TEST(DeploymentTest, DeployedUnderGravityMatchesTheStaticSolveOfTheSameLength) {
   ref.rods.push_back(r);
   const Model rm = compileModel(ref);
   State rs = makeState(rm);
-  ASSERT_TRUE(solveStatic(rm, rs).converged);
+  ASSERT_TRUE(solveStatic(rm, rs).converged());
   double worst = 0, sag = 0;
   for (int i = 0; i <= out; ++i) {
     worst = std::max(worst, (c.x[i] - rs.rods[0].x[i]).norm());
@@ -153,7 +153,7 @@ TEST(DeploymentTest, LengthAndMassAreConservedThroughDeployRetractDeploy) {
   std::vector<std::pair<double, DeviceCommand>> phases = {
       {0.02 / 0.02, {DeviceCommand::Kind::Push, 0.02, 0.02}}, {1.0, pull}, {1.5, {DeviceCommand::Kind::Push, 0.02, 0.03}}};
   for (auto& [seconds, cmd] : phases) {
-    ASSERT_EQ(command(b.model, b.state, cmd), "");
+    ASSERT_EQ(coilsim::test::refusal(command(b.model, b.state, cmd)), "");
     for (int s = 0; s < int(seconds / 1e-3); ++s) {
       ASSERT_TRUE(advance(b.model, b.state).ok());
       worstL = std::max(worstL, std::abs(representedCoilLength(b.model, b.state) / L - 1));
@@ -173,7 +173,7 @@ TEST(DeploymentTest, LengthAndMassAreConservedThroughDeployRetractDeploy) {
 TEST(DeploymentTest, DetachedCoilAtRestDoesNotDrift) {
   Bench b = makeBench(false, 20.0, kLength);
   run(b, {}, 0.3);
-  ASSERT_EQ(command(b.model, b.state, {DeviceCommand::Kind::Detach, 0, 0}), "");
+  ASSERT_EQ(coilsim::test::refusal(command(b.model, b.state, {DeviceCommand::Kind::Detach, 0, 0})), "");
   run(b, {}, 0.001);
   ASSERT_TRUE(b.state.device.detached);
   const RodState& f = b.state.rods[b.dep.freeRod];
@@ -189,17 +189,40 @@ TEST(DeploymentTest, DetachedCoilAtRestDoesNotDrift) {
 TEST(DeploymentTest, InvalidCommandsAreRefusedWithAReasonAndChangeNothing) {
   Bench b = makeBench(false, 20.0, 0.01);
   using K = DeviceCommand::Kind;
-  EXPECT_NE(command(b.model, b.state, {K::Push, 0.01, 0.05}), "") << "push beyond the coil's end";
-  EXPECT_NE(command(b.model, b.state, {K::Push, 10.0, 0}), "") << "push faster than a hand";
-  EXPECT_NE(command(b.model, b.state, {K::Push, std::nan(""), 0}), "") << "NaN speed";
-  EXPECT_NE(command(b.model, b.state, {K::Detach, 0, 0}), "") << "detach before the coil is out";
-  EXPECT_NE(command(b.model, b.state, {K::Pull, 0.01, 0.02}), "") << "pull more than is out";
+  EXPECT_NE(coilsim::test::refusal(command(b.model, b.state, {K::Push, 0.01, 0.05})), "") << "push beyond the coil's end";
+  EXPECT_NE(coilsim::test::refusal(command(b.model, b.state, {K::Push, 10.0, 0})), "") << "push faster than a hand";
+  EXPECT_NE(coilsim::test::refusal(command(b.model, b.state, {K::Push, std::nan(""), 0})), "") << "NaN speed";
+  EXPECT_NE(coilsim::test::refusal(command(b.model, b.state, {K::Detach, 0, 0})), "") << "detach before the coil is out";
+  EXPECT_NE(coilsim::test::refusal(command(b.model, b.state, {K::Pull, 0.01, 0.02})), "") << "pull more than is out";
   EXPECT_FALSE(b.state.device.motion.moving());
   Bench d = makeBench(false, 20.0, kLength);
-  ASSERT_EQ(command(d.model, d.state, {K::Detach, 0, 0}), "");
+  ASSERT_EQ(coilsim::test::refusal(command(d.model, d.state, {K::Detach, 0, 0})), "");
   run(d, {}, 0.001);
-  EXPECT_NE(command(d.model, d.state, {K::Pull, 0.01, 0.001}), "") << "pull after detach";
-  EXPECT_NE(command(d.model, d.state, {K::Twist, 1.0, 0.1}), "") << "twist after detach";
+  EXPECT_NE(coilsim::test::refusal(command(d.model, d.state, {K::Pull, 0.01, 0.001})), "") << "pull after detach";
+  EXPECT_NE(coilsim::test::refusal(command(d.model, d.state, {K::Twist, 1.0, 0.1})), "") << "twist after detach";
+}
+
+// The coil's RodSpec is sampled by compileModel: a rest shape that cannot be
+// built (a polyline of one point) is refused naming the deployment.
+TEST(DeploymentTest, ACoilRestShapeThatCannotBeBuiltNamesTheDeployment) {
+  ModelDef def;
+  DeploymentDef d;
+  d.coilName = "probe";
+  RestShapeDef dot;
+  dot.type = RestShapeDef::Type::Polyline;
+  dot.points = {Vec3::Zero()};
+  d.coil = test::wireSpec(kLength, dot, 7.5e9, 0.39, 21450, 0.15e-3);
+  d.coilBeams = kBeams;
+  d.tip.normal = Vec3(0, 0, 1);
+  def.device = d;
+  try {
+    compileModel(def);
+    ADD_FAILURE() << "a one-point polyline was accepted";
+  } catch (const PhysicsError& e) {
+    EXPECT_EQ(e.failure().kind, FailureKind::BadDefinition);
+    EXPECT_EQ(e.failure().where(), "deployment of 'probe'");
+    EXPECT_NE(e.failure().text.find("rest shape"), std::string::npos) << e.what();
+  }
 }
 
 TEST(DeploymentTest, ReachingTheCoilsEndIsSaidOnceEvenWhileTheCatheterIsRetracted) {
@@ -207,7 +230,7 @@ TEST(DeploymentTest, ReachingTheCoilsEndIsSaidOnceEvenWhileTheCatheterIsRetracte
   using K = DeviceCommand::Kind;
   const TimelineRun r = runTimeline(b.model, b.state,
                                     {push(0, 0.01, 0), {0.3, {K::Retract, 0.005, 0.001}}}, 0.6);
-  ASSERT_TRUE(r.ok);
+  ASSERT_TRUE(r.ok());
   int said = 0;
   for (const std::string& line : r.log) said += line.find("fully deployed") != std::string::npos;
   EXPECT_EQ(said, 1) << "one limit reached, one message (the retraction keeps pressing on it every step)";

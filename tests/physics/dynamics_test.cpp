@@ -257,8 +257,9 @@ TEST(DynamicsTest, BlowUpIsRefusedCountedWarnedOnceAndTheStateRestored) {
     bad.rods[0].loads[0].force = c.force;
     for (int k = 0; k < 3; ++k) {
       const StepReport rep = step(bad, s);
-      EXPECT_EQ(rep.status, StepStatus::BlowUp) << c.what << ": " << rep.message;
-      EXPECT_FALSE(rep.message.empty());
+      ASSERT_FALSE(rep.ok()) << c.what;
+      EXPECT_EQ(rep.failure->kind, FailureKind::BlowUp) << c.what << ": " << rep.message();
+      EXPECT_FALSE(rep.message().empty());
       ++refused;
       EXPECT_TRUE(sameBits(s, before)) << c.what << ": positions, rotations, velocities or time changed";
     }
@@ -282,11 +283,19 @@ TEST(DynamicsTest, HealthRefusesABeamStretchedOrCrushedBeyondTheStrainLimit) {
     const Vec3 chord = r.x[4] - r.x[3];
     const Vec3 shift = strain * chord;  // beam 3 gets strain, beam 4 keeps its length
     for (int i = 4; i < r.activeNodes; ++i) r.x[i] += shift;
-    const std::string problem = checkHealth(m, s);
+    const std::optional<Failure> problem = checkHealth(m, s);
     if (std::abs(strain) < limit) {
-      EXPECT_TRUE(problem.empty()) << strain << ": " << problem;
+      EXPECT_FALSE(problem) << strain << ": " << problem->message();
     } else {
-      EXPECT_NE(problem.find("beam 3: axial strain"), std::string::npos) << strain << ": " << problem;
+      ASSERT_TRUE(problem) << strain;
+      // Where and how much: the beam stretched above, by the strain set there.
+      EXPECT_EQ(problem->kind, FailureKind::BlowUp);
+      EXPECT_EQ(problem->rod, m.rods[0].name);
+      EXPECT_EQ(problem->beam, 3);
+      EXPECT_EQ(problem->quantity, "axial strain");
+      EXPECT_NEAR(problem->value, strain, 1e-12);
+      EXPECT_EQ(problem->limit, limit);
+      EXPECT_NE(problem->message().find("beam 3: axial strain"), std::string::npos) << strain << ": " << problem->message();
     }
   }
 }
@@ -322,7 +331,7 @@ TEST(DynamicsTest, ReleasedShockIsResolvedInSubstepsAndConservesMomentum) {
   ModelDef heldDef = modelOf({held});
   const Model heldModel = compileModel(heldDef);
   State bent = makeState(heldModel);
-  ASSERT_TRUE(solveStatic(heldModel, bent).converged);
+  ASSERT_TRUE(solveStatic(heldModel, bent).converged());
 
   ModelDef freeDef = modelOf({straightRod(kLength, kBeams, platinum(), circularSection(1.5e-4, kPlatinumPoisson))});
   freeDef.damping = {0.0, 1e-5};

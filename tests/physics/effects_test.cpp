@@ -75,7 +75,7 @@ double tipSag(std::initializer_list<const char*> effects, double mediumDensity =
   const Model m = compileModel(d);
   State s = makeState(m);
   const StaticReport rep = solveStatic(m, s, tightStatic(1));
-  EXPECT_TRUE(rep.converged) << rep.message;
+  EXPECT_TRUE(rep.converged()) << rep.message();
   return -s.rods[0].x[kBeams].z();
 }
 

@@ -71,7 +71,7 @@ FeTip solveFe(double alpha, int beams) {
   const Model m = compileModel(modelOf({r}));
   State s = makeState(m);
   const StaticReport rep = solveStatic(m, s, tightStatic(int(2 * alpha) + 2));
-  EXPECT_TRUE(rep.converged) << "alpha " << alpha << ": " << rep.message;
+  EXPECT_TRUE(rep.converged()) << "alpha " << alpha << ": " << rep.message();
   const Vec3 x = s.rods[0].x[beams], t = tangentOf(s.rods[0].q[beams]);
   return {1.0 - x.x(), -x.z(), std::atan2(-t.z(), t.x())};
 }

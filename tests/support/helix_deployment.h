@@ -2,6 +2,7 @@
 // A platinum helix (5 mm loops, 0.8 mm pitch, 0.15 mm wire) of `lengthMm`
 // in a rigid catheter at the origin along +x, `initialMm` out, under
 // gravity, 1 ms steps: the deployment the ui tests drive.
+#include "support/coil_spec.h"
 #include "physics/deployment.h"
 #include "physics/effect.h"
 #include "physics/model.h"
@@ -24,11 +25,8 @@ inline HelixDeployment makeHelixDeployment(double lengthMm = 40.0, double initia
   def.damping = {1.0, 0.0};
   def.timeStep = 1e-3;
   DeploymentDef d;
-  d.coilLength = lengthMm * 1e-3;
+  d.coil = wireSpec(lengthMm * 1e-3, helixRest(0.005, 0.0008), 7.5e9, 0.39, 21450, 0.15e-3);
   d.coilBeams = int(lengthMm);
-  d.coilRest = makeHelix(d.coilLength, d.coilBeams, 0.005, 0.0008, true);
-  d.coilMaterial = {7.5e9, shearModulusOf(7.5e9, 0.39), 21450};
-  d.coilSection = circularSection(0.15e-3, 0.39);
   d.tip.normal = Vec3(0, 0, 1);
   d.maxPushSpeed = 0.05;
   d.initialDeployed = initialMm * 1e-3;

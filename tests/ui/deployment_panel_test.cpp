@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "physics/run.h"
+#include "support/refusal.h"
 #include "support/helix_deployment.h"
 #include "ui/panel.h"
 #include "ui/session.h"
@@ -23,7 +24,7 @@ TEST(DetachConfirmation, NotFullyOutIsRefusedWithoutAskingAndChangesNothing) {
   const test::HelixDeployment sc = test::makeHelixDeployment(40.0, 2.0);
   Session s(sc.model, sc.start);
   State copy = s.state();
-  const std::string physics = coilsim::command(s.model(), copy, detach());
+  const std::string physics = coilsim::test::refusal(coilsim::command(s.model(), copy, detach()));
   ASSERT_FALSE(physics.empty());
 
   EXPECT_EQ(s.wouldRefuse(detach()), physics);
@@ -41,7 +42,7 @@ TEST(DetachConfirmation, FullyOutAsksFirstAndDetachesOnlyWhenConfirmed) {
   const test::HelixDeployment sc = test::makeHelixDeployment(40.0, 40.0);
   Session s(sc.model, sc.start);
   State copy = s.state();
-  ASSERT_EQ(coilsim::command(s.model(), copy, detach()), "");
+  ASSERT_EQ(coilsim::test::refusal(coilsim::command(s.model(), copy, detach())), "");
 
   EXPECT_EQ(s.wouldRefuse(detach()), "");
   DeviceControls dc;

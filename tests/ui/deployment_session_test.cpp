@@ -48,7 +48,7 @@ TEST(SessionDeployment, TimelineInTheWindowMatchesTheHeadlessRunBitForBit) {
   State headless = sc.start;
   const TimelineRun run = runTimeline(sc.model, headless, timeline, duration);
   const DeviceState& dsHeadless = headless.device;
-  ASSERT_TRUE(run.ok);
+  ASSERT_TRUE(run.ok()) << run.failure->message();
 
   Session s(sc.model, sc.start);
   s.setTimeline(timeline);

@@ -70,7 +70,7 @@ TEST(CustomEffect, RegisteredInTheTestMakesTheErrorFall) {
 
   const Measurement sk = skeleton();
   ModelParams truth = ModelParams::nominal(sk);
-  truth.youngModulus = kE;
+  truth.coil.youngModulus = kE;
   GenerateOptions g;
   g.sigma = kSigma;
   const Measurement control = generateMeasurement(sk, truth, g);

@@ -52,8 +52,8 @@ TEST(FitJitter, SmoothStaticStagesStayWithinTheSecondOrderBound) {
   const std::vector<double> j = stageJitter(sim, cmp, p, youngModulusFit(), o);
   // The largest node move when E doubles from the largest centre (the most compliant state is at the smallest).
   ModelParams soft = p, stiff = p;
-  soft.youngModulus = p.youngModulus * o.centres.front();
-  stiff.youngModulus = 2 * soft.youngModulus;
+  soft.coil.youngModulus = p.coil.youngModulus * o.centres.front();
+  stiff.coil.youngModulus = 2 * soft.coil.youngModulus;
   const std::vector<StageSim> a = sim.run(soft, false), b = sim.run(stiff, false);
   ASSERT_EQ(j.size(), m.stages.size());
   for (size_t k = 0; k < j.size(); ++k) {

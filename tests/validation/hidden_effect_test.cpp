@@ -70,7 +70,7 @@ void addTwistStage(Measurement& m, double length, double twist, double twistTime
 
 ModelParams truthOf(const Measurement& m) {
   ModelParams p = ModelParams::nominal(m);
-  p.youngModulus = kTrueE;
+  p.coil.youngModulus = kTrueE;
   return p;
 }
 

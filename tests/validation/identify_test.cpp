@@ -29,7 +29,7 @@ Measurement straightCantilever() {
 Measurement measuredCantilever() {
   const Measurement sk = straightCantilever();
   ModelParams truth = ModelParams::nominal(sk);
-  truth.youngModulus = 5e9;
+  truth.coil.youngModulus = 5e9;
   GenerateOptions g;
   g.sigma = 0.02e-3;
   return generateMeasurement(sk, truth, g);

@@ -252,10 +252,10 @@ TEST(ReferenceFiles, CatheterComplianceAtTheTrueTube) {
   const Comparison cmp(m);
   const refrod::Scenario& sc = scenario(name);
   ModelParams p = ModelParams::nominal(m);
-  p.youngModulus = sc.trueYoungGpa * 1e9;
+  p.coil.youngModulus = sc.trueYoungGpa * 1e9;
   const double ro = sc.tube.outerDiameterMm / 2e3, ri = sc.tube.innerDiameterMm / 2e3;
   const double tubeEI = sc.tube.youngGpa * 1e9 * M_PI * (std::pow(ro, 4) - std::pow(ri, 4)) / 4;
-  const double coilEI = p.youngModulus * M_PI * std::pow(m.coil.wireRadius, 4) / 4;
+  const double coilEI = p.coil.youngModulus * M_PI * std::pow(m.coil.wireRadius, 4) / 4;
   p.effects.push_back(EffectRegistry::global().use("catheter_compliance"));
   EffectUse& c = p.effects.back();
   c.set("segment_length_mm", sc.tube.lengthMm * 1e-3);

@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/math/bv/AABB.h>
+
+#include "physics/failure.h"
 
 namespace coilsim {
 
@@ -15,11 +16,11 @@ struct ObstacleTree::Impl {
 };
 
 ObstacleTree::ObstacleTree(std::shared_ptr<const TriangleMesh> mesh) : mesh_(std::move(mesh)), impl_(new Impl) {
-  if (!mesh_) throw std::invalid_argument("obstacle tree: no mesh");
+  if (!mesh_) throw PhysicsError(badDefinition("obstacle tree", "no mesh"));
   const TriangleMesh& m = *mesh_;
   const int nv = int(m.vertices.size());
   for (const Vec3& v : m.vertices)
-    if (!v.allFinite()) throw std::invalid_argument("mesh '" + m.name + "': a vertex is not finite");
+    if (!v.allFinite()) throw PhysicsError(badDefinition("mesh '" + m.name + "'", "a vertex is not finite"));
   std::vector<fcl::Vector3d> vertices(m.vertices.begin(), m.vertices.end());
   std::vector<fcl::Triangle> triangles;
   triangles.reserve(m.triangles.size());
@@ -28,8 +29,8 @@ ObstacleTree::ObstacleTree(std::shared_ptr<const TriangleMesh> mesh) : mesh_(std
     const Eigen::Vector3i& f = m.triangles[t];
     for (int k = 0; k < 3; ++k)
       if (f[k] < 0 || f[k] >= nv)
-        throw std::invalid_argument("mesh '" + m.name + "': triangle " + std::to_string(t) + " uses missing vertex " +
-                                    std::to_string(f[k]));
+        throw PhysicsError(badDefinition("mesh '" + m.name + "'", "triangle " + std::to_string(t) +
+                                                                          " uses missing vertex " + std::to_string(f[k])));
     triangles.emplace_back(f[0], f[1], f[2]);
     const Vec3 n = (m.vertices[f[1]] - m.vertices[f[0]]).cross(m.vertices[f[2]] - m.vertices[f[0]]);
     // A degenerate triangle keeps a zero normal: it never decides a side.
@@ -38,7 +39,7 @@ ObstacleTree::ObstacleTree(std::shared_ptr<const TriangleMesh> mesh) : mesh_(std
   fcl::BVHModel<fcl::AABBd>& bvh = impl_->bvh;
   if (bvh.beginModel(int(triangles.size()), nv) != fcl::BVH_OK || bvh.addSubModel(vertices, triangles) != fcl::BVH_OK ||
       bvh.endModel() != fcl::BVH_OK)
-    throw std::invalid_argument("mesh '" + m.name + "': FCL could not build its bounding-volume tree");
+    throw PhysicsError(badDefinition("mesh '" + m.name + "'", "FCL could not build its bounding-volume tree"));
   // The leaves' own boxes, so that a cached walk filters by exactly the
   // comparisons the walk makes.
   boxLo_.assign(triangles.size(), Vec3::Zero());

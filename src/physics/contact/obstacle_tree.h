@@ -16,7 +16,7 @@ namespace coilsim {
 
 class ObstacleTree {
  public:
-  // Throws std::invalid_argument naming the mesh if a triangle indexes a
+  // Throws PhysicsError (physics/failure.h) naming the mesh if a triangle indexes a
   // missing vertex or a vertex is not finite.
   explicit ObstacleTree(std::shared_ptr<const TriangleMesh> mesh);
   ~ObstacleTree();
