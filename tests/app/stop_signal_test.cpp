@@ -12,21 +12,31 @@
 namespace apptest {
 namespace {
 
-// Starts coilsim in the background, sends `signal` after `delay` s, and
-// returns its exit code and streams. timeout(1) ends a run that ignores the
-// signal, so the test cannot hang.
-Exec interrupted(const std::vector<std::string>& args, int signal, double delay, const fs::path& dir) {
-  std::string cmd = "env -u DISPLAY -u WAYLAND_DISPLAY timeout 120 " + quote(COILSIM_BINARY);
+// Starts coilsim in the background on a pseudo-terminal (script(1)), waits
+// until its progress line shows that steps are being taken, then sends
+// `signal` and returns its exit code, stdout and what the terminal showed
+// (stderr). Waiting for the progress line rather than a fixed delay: a slow
+// start (a loaded machine, the sanitizers) would otherwise be signalled
+// before its handlers are installed or before its first step. The progress
+// line is drawn only after a step, half a second into stepping
+// (app/progress.cpp). timeout(1) ends a run that ignores the signal and the
+// wait is bounded, so the test cannot hang; timeout passes the signal on.
+Exec interrupted(const std::vector<std::string>& args, int signal, const fs::path& dir) {
+  std::string cmd = "echo $$ >" + quote((dir / "pid.txt").string()) +
+                    "; exec env -u DISPLAY -u WAYLAND_DISPLAY timeout 600 " + quote(COILSIM_BINARY);
   for (const std::string& a : args) cmd.append(" ").append(quote(a));
-  const std::string shell = cmd + " >" + quote((dir / "stdout.txt").string()) + " 2>" +
-                            quote((dir / "stderr.txt").string()) + " & pid=$!; sleep " + std::to_string(delay) +
-                            "; kill -" + std::to_string(signal) + " $pid; wait $pid; echo $? >" +
+  cmd += " >" + quote((dir / "stdout.txt").string());
+  const std::string tty = quote((dir / "tty.txt").string());
+  const std::string shell = "script -q -e -c " + quote(cmd) + " /dev/null >" + tty +
+                            " 2>&1 & job=$!; for i in $(seq 3000); do grep -q 's simulated' " + tty +
+                            " && break; sleep 0.1; done; kill -" + std::to_string(signal) + " $(cat " +
+                            quote((dir / "pid.txt").string()) + "); wait $job; echo $? >" +
                             quote((dir / "code.txt").string());
   std::system(("bash -c " + quote(shell)).c_str());
   Exec r;
   r.code = std::stoi(slurp(dir / "code.txt"));
   r.out = slurp(dir / "stdout.txt");
-  r.err = slurp(dir / "stderr.txt");
+  r.err = slurp(dir / "tty.txt");
   return r;
 }
 
@@ -34,7 +44,7 @@ TEST(StopSignal, SigintStopsADynamicRunWithAValidResult) {
   const fs::path dir = scratch("stop_sigint");
   const Exec r = interrupted(
       {"run", scene("helix-settling.json"), "--headless", "--duration", "1000", "--out", (dir / "r.json").string()},
-      SIGINT, 1.5, dir);
+      SIGINT, dir);
   EXPECT_EQ(r.code, 128 + SIGINT) << r.err;
   EXPECT_CONTAINS(r.err, "interrupted (SIGINT)");
   const nlohmann::json result = readJson(dir / "r.json");
@@ -49,7 +59,7 @@ TEST(StopSignal, SigtermStopsADeploymentWithAValidResult) {
   const Exec r =
       interrupted({"run", scene("default.json"), "--headless", "--input", kSource + "/timelines/push-default.json",
                    "--duration", "1000", "--out", (dir / "r.json").string()},
-                  SIGTERM, 1.5, dir);
+                  SIGTERM, dir);
   EXPECT_EQ(r.code, 128 + SIGTERM) << r.err;
   EXPECT_CONTAINS(r.err, "terminated (SIGTERM)");
   const nlohmann::json result = readJson(dir / "r.json");
