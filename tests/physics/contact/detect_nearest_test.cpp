@@ -18,6 +18,8 @@
 #include "physics/contact/obstacle_tree.h"
 #include "physics/run.h"
 #include "physics/integrator.h"
+#include "support/coil_spec.h"
+#include "support/refusal.h"
 #include "support/meshes.h"
 #include "support/rod_models.h"
 
@@ -155,11 +157,8 @@ TEST(WallNearestFeatureTest, CachedAndHintedQueriesEqualThePlainTreeQueryOnAMovi
   def.timeStep = 1e-3;
   def.obstacles.push_back(test::obstacleOf(test::icosphere(3.5e-3, 4)));
   DeploymentDef d;
-  d.coilLength = 0.015;
+  d.coil = test::wireSpec(0.015, test::helixRest(6e-3, 0.4e-3), 7.5e9, test::kPlatinumPoisson, 21450, 0.15e-3);
   d.coilBeams = 30;
-  d.coilRest = makeHelix(d.coilLength, d.coilBeams, 6e-3, 0.4e-3, true);
-  d.coilMaterial = test::platinum();
-  d.coilSection = circularSection(0.15e-3, test::kPlatinumPoisson);
   d.tip.position = Vec3(0, 0, -2.5e-3);
   d.tip.direction = Vec3(0, 0, 1);
   d.tip.normal = Vec3(1, 0, 0);
@@ -167,7 +166,7 @@ TEST(WallNearestFeatureTest, CachedAndHintedQueriesEqualThePlainTreeQueryOnAMovi
   def.device = d;
   const Model model = compileModel(def);
   State state = makeState(model);
-  ASSERT_EQ(command(model, state, {DeviceCommand::Kind::Push, 0.01, d.coilLength}), "");
+  ASSERT_EQ(test::refusal(command(model, state, {DeviceCommand::Kind::Push, 0.01, d.coil.length})), "");
   const ObstacleTree& tree = *model.obstacleTrees[0];
   std::vector<TriangleCache> caches(d.coilBeams);
   std::vector<int> hints(d.coilBeams, -1);
