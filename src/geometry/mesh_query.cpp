@@ -73,10 +73,37 @@ int MeshQuery::build(int first, int count, std::vector<Vec3>& centres) {
   return index;
 }
 
-int MeshQuery::crossings(const Vec3& o, const Vec3& dir) const {
-  if (nodes_.empty()) return 0;
+namespace {
+
+// Moeller-Trumbore: where the ray o + t dir meets the plane of triangle
+// (a, b, c), in barycentric u, v and ray parameter t. False when the ray is
+// parallel to the plane (`inPlane` then says whether it lies in it).
+struct RayCrossing {
+  double u = 0, v = 0, t = 0;
+};
+bool rayTrianglePlane(const Vec3& o, const Vec3& dir, const Vec3& a, const Vec3& b, const Vec3& c, RayCrossing& x,
+                      bool& inPlane) {
+  const Vec3 e1 = b - a, e2 = c - a, pv = dir.cross(e2);
+  const double det = e1.dot(pv);
+  const double scale = e1.norm() * e2.norm();
+  if (std::abs(det) <= 1e-12 * scale) {
+    inPlane = std::abs((o - a).dot(e1.cross(e2))) <= 1e-12 * scale * (o - a).norm();
+    return false;
+  }
+  const double invDet = 1.0 / det;
+  const Vec3 tv = o - a, qv = tv.cross(e1);
+  x.u = tv.dot(pv) * invDet;
+  x.v = dir.dot(qv) * invDet;
+  x.t = e2.dot(qv) * invDet;
+  return true;
+}
+
+}  // namespace
+
+template <class Visit>
+bool MeshQuery::walkRay(const Vec3& o, const Vec3& dir, Visit&& visit) const {
+  if (nodes_.empty()) return true;
   const Vec3 inv = dir.cwiseInverse();
-  int count = 0;
   int stack[128];
   int top = 0;
   stack[top++] = 0;
@@ -89,63 +116,41 @@ int MeshQuery::crossings(const Vec3& o, const Vec3& dir) const {
     }
     for (int i = node.first; i < node.first + node.count; ++i) {
       const Eigen::Vector3i& f = mesh_.triangles[order_[i]];
-      const Vec3 &a = mesh_.vertices[f[0]], &b = mesh_.vertices[f[1]], &c = mesh_.vertices[f[2]];
-      // Moeller-Trumbore with barycentric margins: a hit too near an edge is
-      // ambiguous (it may be counted twice or not at all), so ask for another ray.
-      const Vec3 e1 = b - a, e2 = c - a, pv = dir.cross(e2);
-      const double det = e1.dot(pv);
-      const double scale = e1.norm() * e2.norm();
-      if (std::abs(det) <= 1e-12 * scale) {
-        // Ray parallel to the triangle's plane: ambiguous only if it lies in it.
-        if (std::abs((o - a).dot(e1.cross(e2))) <= 1e-12 * scale * (o - a).norm()) return -1;
-        continue;
-      }
-      const double inv_det = 1.0 / det;
-      const Vec3 tv = o - a;
-      const double u = tv.dot(pv) * inv_det;
-      const Vec3 qv = tv.cross(e1);
-      const double v = dir.dot(qv) * inv_det;
-      const double t = e2.dot(qv) * inv_det;
-      constexpr double eps = 1e-9;
-      if (u < -eps || v < -eps || u + v > 1 + eps || t < 0) continue;
-      if (u < eps || v < eps || u + v > 1 - eps) return -1;
-      ++count;
+      if (!visit(order_[i], mesh_.vertices[f[0]], mesh_.vertices[f[1]], mesh_.vertices[f[2]])) return false;
     }
   }
-  return count;
+  return true;
+}
+
+int MeshQuery::crossings(const Vec3& o, const Vec3& dir) const {
+  int count = 0;
+  const bool clear = walkRay(o, dir, [&](int, const Vec3& a, const Vec3& b, const Vec3& c) {
+    // Barycentric margins: a hit too near an edge is ambiguous (it may be
+    // counted twice or not at all), so ask for another ray; so is a ray
+    // lying in a triangle's plane.
+    RayCrossing x;
+    bool inPlane = false;
+    if (!rayTrianglePlane(o, dir, a, b, c, x, inPlane)) return !inPlane;
+    constexpr double eps = 1e-9;
+    if (x.u < -eps || x.v < -eps || x.u + x.v > 1 + eps || x.t < 0) return true;
+    if (x.u < eps || x.v < eps || x.u + x.v > 1 - eps) return false;
+    ++count;
+    return true;
+  });
+  return clear ? count : -1;
 }
 
 int MeshQuery::firstHit(const Vec3& o, const Vec3& dir) const {
   int hit = -1;
   double nearest = std::numeric_limits<double>::infinity();
-  if (nodes_.empty()) return hit;
-  const Vec3 inv = dir.cwiseInverse();
-  int stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top) {
-    const Node& node = nodes_[stack[--top]];
-    if (!rayHitsBox(node.box, o, inv)) continue;
-    if (node.left >= 0) {
-      stack[top++] = node.left, stack[top++] = node.right;
-      continue;
-    }
-    for (int i = node.first; i < node.first + node.count; ++i) {
-      const Eigen::Vector3i& f = mesh_.triangles[order_[i]];
-      const Vec3 &a = mesh_.vertices[f[0]], &b = mesh_.vertices[f[1]], &c = mesh_.vertices[f[2]];
-      const Vec3 e1 = b - a, e2 = c - a, pv = dir.cross(e2);
-      const double det = e1.dot(pv);
-      if (std::abs(det) <= 1e-12 * e1.norm() * e2.norm()) continue;  // parallel to the triangle
-      const double invDet = 1.0 / det;
-      const Vec3 tv = o - a;
-      const double u = tv.dot(pv) * invDet;
-      const Vec3 qv = tv.cross(e1);
-      const double v = dir.dot(qv) * invDet;
-      const double t = e2.dot(qv) * invDet;
-      if (u < 0 || v < 0 || u + v > 1 || !(t > 0) || t >= nearest) continue;
-      nearest = t, hit = order_[i];
-    }
-  }
+  walkRay(o, dir, [&](int triangle, const Vec3& a, const Vec3& b, const Vec3& c) {
+    RayCrossing x;
+    bool inPlane = false;
+    if (!rayTrianglePlane(o, dir, a, b, c, x, inPlane)) return true;
+    if (x.u < 0 || x.v < 0 || x.u + x.v > 1 || !(x.t > 0) || x.t >= nearest) return true;
+    nearest = x.t, hit = triangle;
+    return true;
+  });
   return hit;
 }
 

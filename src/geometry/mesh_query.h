@@ -45,6 +45,10 @@ class MeshQuery {
     int left = -1, right = -1;
   };
   int build(int first, int count, std::vector<Vec3>& centres);
+  // Calls visit(triangle, a, b, c) for each triangle in a leaf whose box the
+  // ray meets; false from visit stops the walk (and is returned).
+  template <class Visit>
+  bool walkRay(const Vec3& origin, const Vec3& direction, Visit&& visit) const;
 
   TriangleMesh mesh_;
   std::vector<Node> nodes_;
