@@ -133,6 +133,10 @@ WireInjectionResult runWireInjection(const WireInjectionSpec& s) {
     }
   }
   r.simulated = state.time;
+  if (r.ok && !r.jammed && ds.deployed < target - 1e-9) {
+    r.ok = false;
+    r.error = "the wire did not reach the target packing within " + std::to_string(r.simulated) + " s simulated";
+  }
   r.injected = ds.deployed;
   r.packing = injectedPacking(ds.deployed, s.wireDiameter, big);
   const RodState& chain = state.rods[size_t(dep.chainRod)];

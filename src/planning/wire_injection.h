@@ -41,7 +41,7 @@ struct InjectionSample {
 };
 
 struct WireInjectionResult {
-  bool ok = true;         // false: a step was refused (error says why)
+  bool ok = true;         // false: a step was refused, or twice the time the strokes need ran out (error says why)
   std::string error;
   bool jammed = false;    // stopped by the force, before the target packing
   double injected = 0;    // m
@@ -61,7 +61,8 @@ struct WireInjectionResult {
 // std::invalid_argument naming the field when a value is out of range.
 Model wireInjectionModel(const WireInjectionSpec& spec);
 
-// Runs the injection to the target packing, a jam, or a refused step.
+// Runs the injection to the target packing, a jam, a refused step or twice
+// the simulated time the strokes and rests need (then not ok).
 WireInjectionResult runWireInjection(const WireInjectionSpec& spec);
 
 // phi of `length` m of wire of diameter d in a sphere of diameter D.
