@@ -1,6 +1,6 @@
 #pragma once
 // The wire-injection experiment of the dense-packing literature, in
-// coilsim: a straight elastic wire pushed at constant speed through a
+// coilsim: a straight elastic wire pushed in strokes at constant speed through a
 // catheter tip at the wall into a rigid spherical cavity (Stoop, Najafi,
 // Wittel, Habibi, Herrmann, PRL 106, 214102, 2011; Vetter, Wittel, Stoop,
 // Herrmann, Eur. J. Mech. A 37, 160, 2013). Stated, as they state it, in
@@ -10,7 +10,8 @@
 // as a packing fraction phi = (pi d^2 / 4) L / (pi D^3 / 6). The wire has
 // the bending and torsional stiffness of a 0.010-inch platinum primary coil
 // (the catalogue's filling-helical-4x80, docs/coils.md) but a straight rest
-// shape, as the papers' wires. No gravity or fluid: their cavity is dry.
+// shape, as the papers' wires. No gravity or fluid, so that D/d, mu and the
+// torsion alone set the shape.
 // docs/planning.md, "A published check of dense packing".
 #include <string>
 #include <vector>
