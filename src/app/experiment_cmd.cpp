@@ -25,7 +25,8 @@ std::vector<double> numbers(const ParsedArgs& p, const char* option, std::vector
     const size_t comma = std::min(text->find(',', at), text->size());
     double v = 0;
     const std::string item = text->substr(at, comma - at);
-    if (!parseNumber(item, v)) throw UsageError(std::string(option) + " needs numbers separated by commas, got \"" + item + "\"");
+    if (!parseNumber(item, v))
+      throw UsageError(std::string(option) + " needs numbers separated by commas, got \"" + item + "\"");
     out.push_back(v);
     at = comma + 1;
   }

@@ -48,9 +48,10 @@ Model wireInjectionModel(const WireInjectionSpec& s) {
   check(std::isfinite(s.friction) && s.friction >= 0 && s.friction <= 2, "friction", "in [0, 2]");
   check(std::isfinite(s.turnsPerDiameter) && std::abs(s.turnsPerDiameter) <= 20, "turns per cavity diameter",
         "in [-20, 20]");
-  check(std::isfinite(s.targetPacking) && s.targetPacking > 0 && s.targetPacking <= 0.5, "target packing", "in (0, 0.5]");
-  check(s.wireDiameter > 0 && s.beam > 0 && s.pushSpeed > 0 && s.stroke > 0 && s.jamForceRatio > 0, "wire diameter, beam, push speed, stroke and jam force",
-        "positive");
+  check(std::isfinite(s.targetPacking) && s.targetPacking > 0 && s.targetPacking <= 0.5, "target packing",
+        "in (0, 0.5]");
+  check(s.wireDiameter > 0 && s.beam > 0 && s.pushSpeed > 0 && s.stroke > 0 && s.jamForceRatio > 0,
+        "wire diameter, beam, push speed, stroke and jam force", "positive");
   ModelDef def;
   def.damping = {1.0, 0.0};
   def.timeStep = 1e-3;
