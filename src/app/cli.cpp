@@ -16,6 +16,7 @@
 #include "app/commands.h"
 #include "app/data_paths.h"
 #include "app/diagnose_cmd.h"
+#include "app/experiment_cmd.h"
 #include "app/help.h"
 #include "app/mesh_cmd.h"
 #include "app/options.h"
@@ -108,6 +109,7 @@ int dispatch(const app::CommandSpec& c, const app::ParsedArgs& p) {
   if (n == "phantom") return app::runPhantomCommand(forwarded(p, false));
   if (n == "plan") return app::runPlan(forwarded(p, false));
   if (n == "plan-merge") return app::runPlanMerge(forwarded(p, false));
+  if (n == "experiment") return app::runExperiment(p);
   if (n == "practice") return app::runPractice(forwarded(p, false));
   if (n == "validate") return app::runValidate(forwarded(p, true));
   if (n == "diagnose") return app::runDiagnose(forwarded(p, true));

@@ -102,6 +102,14 @@ constexpr std::array kPlan{
     kQuiet,
 };
 
+constexpr std::array kExperiment{
+    value("--cavity-ratio", K::Text, "a,b", "cavity diameter over wire diameter, one run each (default 20)"),
+    value("--friction", K::Text, "a,b", "Coulomb friction coefficients, one run each (default 0,0.1,0.3)"),
+    number("--packing", "PHI", "stop at this packing fraction (default 0.1)", 0, 0.5, true),
+    value("--turns", K::Text, "a,b", "twist turned at the catheter per cavity diameter pushed, one run each (default 0)"),
+    integer("--jobs", "N", "runs on N threads", 1, 256),
+};
+
 constexpr std::array kPlanMerge{
     value("--out", K::Directory, "DIR", "write the merged DIR/plan.json and DIR/plan.md"),
 };
@@ -198,6 +206,12 @@ constexpr std::array kCommands{
                 "exit codes: 0 ok, 1 a candidate's simulation failed, 2 bad input, 130 / 143 stopped"},
     CommandSpec{"plan-merge", "merge plans (e.g. of a Slurm job array)", "", "DIR", K::Directory, 1, -1, kPlanMerge,
                 "exit codes: 0 ok, 2 a directory holds no coilsim-plan/1 plan.json"},
+    CommandSpec{"experiment", "a published dense-packing experiment: a wire injected into a sphere (docs/planning.md)",
+                "experiment injection [--cavity-ratio a,b] [--friction a,b] [--turns a,b] [--packing PHI]\n"
+                "           [--jobs N]",
+                "injection", K::Text, 1, 1, kExperiment,
+                "Prints one Markdown table row per cavity ratio, friction coefficient and torsion.\n"
+                "exit codes: 0 ok, 1 a run's step was refused (the others are printed), 2 bad input"},
     CommandSpec{"practice", "play or replay a practice session, write its score sheet (docs/planning.md)",
                 "practice CASE --coil NAME --input TIMELINE [--view V] [--views T:VIEW,...] [--duration S]\n"
                 "         [--record SESSION] [--screenshot PNG] [--size WxH] --out SCORE\n"
