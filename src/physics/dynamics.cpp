@@ -119,10 +119,35 @@ void advanceTargets(const Model& model, State& state, double dt) {
 
 namespace {
 
+// One linearised step moves each node along a straight line (x += h v), so
+// an element that turns by an angle a within the step ends stretched by
+// sqrt(1 + a^2) - 1, about a^2 / 2, whatever its axial stiffness: a stretch
+// of the step, not of the wire. Left in, the stiff wire gives it back as
+// newtons of tension the next step, which turn the elements further (the
+// twist-and-pull and the soak's refusals, docs/input-limits.md). A step
+// that leaves an element stretched by more than this (turned by more than
+// about 0.32 rad) is taken again in substeps, as an unhealthy one is.
+constexpr double kLinearisedStretch = 0.05;
+
+// Whether some active element is stretched beyond kLinearisedStretch
+// (compared squared: no square root per element).
+bool overstretched(const State& state) {
+  const double limit = (1 + kLinearisedStretch) * (1 + kLinearisedStretch);
+  for (const RodState& r : state.rods) {
+    if (!r.active) continue;
+    for (int e = 0; e + 1 < r.activeNodes; ++e)
+      if ((r.x[e + 1] - r.x[e]).squaredNorm() > limit * r.beams[e].length * r.beams[e].length) return true;
+  }
+  return false;
+}
+
 // One implicit step of length h from the current state; `detect` runs the
 // effects' per-step preparation (contact detection) first, `verify` asks
-// them afterwards whether the step outran it.
-StepReport attempt(const Model& model, State& state, double h, bool detect, bool verify, long& iterations) {
+// them afterwards whether the step outran it, and whether it stretched an
+// element beyond what one linearised step follows (`retake`, set only then).
+StepReport attempt(const Model& model, State& state, double h, bool detect, bool verify, long& iterations,
+                   bool& retake) {
+  retake = false;
   for (RodState& r : state.rods) saveStart(r);
   advanceTargets(model, state, h);
   if (detect)
@@ -142,6 +167,7 @@ StepReport attempt(const Model& model, State& state, double h, bool detect, bool
         report.failure = std::move(f);
       }
     }
+  if (verify && report.ok()) retake = overstretched(state);
   return report;
 }
 
@@ -162,14 +188,16 @@ StepReport retryInSubsteps(const Model& model, State& state, const Snapshot& sta
   for (int parts = 2; parts <= kMaxParts; parts *= 2) {
     const double h = model.timeStep / parts;
     report = {};
-    for (int p = 0; p < parts && report.ok(); ++p) {
+    bool retake = false;
+    for (int p = 0; p < parts && report.ok() && !retake; ++p) {
       // The contacts found at the start of the interval still hold for the first substep.
-      // The finest split is kept even if an effect says it outran its preparation.
-      report = attempt(model, state, h, p > 0, parts < kMaxParts, iterations);
+      // The finest split is kept even if an effect says it outran its preparation
+      // or an element is still stretched beyond kLinearisedStretch.
+      report = attempt(model, state, h, p > 0, parts < kMaxParts, iterations, retake);
       state.time += h;
     }
     state.time = start.time;  // step() adds the whole interval
-    if (report.ok()) return report;
+    if (report.ok() && !retake) return report;
     state.rods = start.rods;
   }
   return report;
@@ -234,8 +262,9 @@ StepReport step(const Model& model, State& state) {
   }
   const auto start = std::chrono::steady_clock::now();
   long iterations = 0;
-  StepReport report = attempt(model, state, model.timeStep, true, true, iterations);
-  if (!report.ok()) {
+  bool retake = false;
+  StepReport report = attempt(model, state, model.timeStep, true, true, iterations, retake);
+  if (!report.ok() || retake) {
     for (RodState& r : state.rods) restoreStart(r);
     Snapshot snapshot{state.rods, state.time};
     const StepReport first = report;
@@ -245,8 +274,9 @@ StepReport step(const Model& model, State& state) {
     } else {
       state.rods = std::move(snapshot.rods);
       ++state.blowups;
-      // A missed contact alone is not why a step is refused: the substeps' failure is.
-      if (first.failure->kind != FailureKind::MissedContact) report = first;
+      // A missed contact or a stretch of the linearisation alone is not why a
+      // step is refused: the substeps' failure is.
+      if (first.failure && first.failure->kind != FailureKind::MissedContact) report = first;
       report.failure->time = state.time;
       warnOnce(state, describe(*report.failure));
     }

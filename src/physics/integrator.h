@@ -22,9 +22,12 @@ struct StepReport {
 // linearisation, plus model.newtonIterations - 1 further Newton iterations):
 //   [(1 + h a) M + h D_eff + (h b + h^2) K] dv = h (f - (a M + b K + D_eff) v - h K v)
 // with Rayleigh damping a M + b K, solved per rod by the O(n) block
-// tridiagonal Cholesky. Constrained DOFs move to their targets. If the result
-// is not finite, too fast or too strained, the step is refused: the State is
-// restored, state.blowups is counted and a warning is recorded once.
+// tridiagonal Cholesky. Constrained DOFs move to their targets. A step that
+// leaves an element stretched by more than 5 % (a linearised step turns an
+// element along a chord, not an arc) or whose result is unhealthy is taken
+// again in 2, 4 ... 64 substeps (state.substepped counts it). If the result
+// is still not finite, too fast or too strained, the step is refused: the
+// State is restored, state.blowups is counted and a warning is recorded once.
 StepReport step(const Model& model, State& state);
 
 // Advances every constraint target of the model's prescribed motion by dt.
