@@ -67,8 +67,8 @@ CandidateResult runCandidate(const PlanSetup& setup, const Candidate& candidate,
                              int detectionThreads = 1);
 
 // Threads for each run's contact detection when `runsAtOnce` runs go at
-// once: 2 for a single run on a machine of two cores or more (its second
-// core is otherwise idle), else 1.
+// once: 2 for a single run on a machine of two cores or more whose load
+// leaves a core idle, else 1. (The results are the same either way.)
 int detectionThreadsFor(int runsAtOnce);
 
 // All candidates on up to `jobs` threads; results in the candidates' order.
