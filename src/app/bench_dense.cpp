@@ -6,6 +6,7 @@
 #include <time.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -26,6 +27,11 @@ double cpuMicroseconds() {
   return 1e6 * double(t.tv_sec) + 1e-3 * double(t.tv_nsec);
 }
 
+double wallMicroseconds() {
+  return 1e-3 * double(std::chrono::duration_cast<std::chrono::nanoseconds>(
+                           std::chrono::steady_clock::now().time_since_epoch()).count());
+}
+
 bool isContact(const EffectUse& u) {
   return u.name() == "wall_contact" || u.name() == "self_contact" || u.name() == "rod_contact";
 }
@@ -36,9 +42,11 @@ void benchDenseFigures(const std::function<void(const std::string&, double)>& se
   const std::vector<int> lengths = quick ? std::vector<int>{100, 500} : std::vector<int>{100, 250, 500, 1000, 1500};
   if (!json)
     std::printf("dense packing: coil in nested spherical spirals in a 7 mm sac (5120 triangles), 0.254 mm primary, "
-                "wall + self + rod contact, thread CPU time per step:\n"
-                "  %8s %8s %8s %10s %12s %14s %14s %8s\n",
-                "coil_mm", "segments", "packing", "step_us", "detect_us", "detect_fresh_us", "contacts/seg", "us/seg");
+                "wall + self + rod contact, thread CPU time per step (detect_wall_us: wall time of detection on 1 and "
+                "2 threads, physics/contact/detect_parallel.h):\n"
+                "  %8s %8s %8s %10s %12s %14s %12s %12s %14s %8s\n",
+                "coil_mm", "segments", "packing", "step_us", "detect_us", "detect_fresh_us", "1t_wall_us", "2t_wall_us",
+                "contacts/seg", "us/seg");
   for (int mm : lengths) {
     const Model model = compileModel(planning::denseSacModel(units::mmToM(mm)));
     State s = makeState(model);
@@ -47,7 +55,7 @@ void benchDenseFigures(const std::function<void(const std::string&, double)>& se
     const int warm = 3, steps = quick ? 5 : 20;
     for (int i = 0; i < warm; ++i)
       if (const StepReport rep = step(model, s); !rep.ok() && !json) std::printf("  (%d mm, warm-up: %s)\n", mm, rep.message().c_str());
-    double stepUs = 0, detectUs = 0, freshUs = 0;
+    double stepUs = 0, detectUs = 0, freshUs = 0, wall1Us = 0, wall2Us = 0;
     long contacts = 0;
     bool ok = true;
     for (int i = 0; i < steps; ++i) {
@@ -56,6 +64,15 @@ void benchDenseFigures(const std::function<void(const std::string&, double)>& se
       for (const EffectUse& u : model.effects)
         if (u.enabled && isContact(u)) u.effect->beginStep(model, u.values, copy, model.timeStep);
       detectUs += cpuMicroseconds() - t0;
+      // Wall time on one thread and on two (the same contacts, bit for bit).
+      for (const int threads : {1, 2}) {
+        copy = s;
+        copy.contactScratch.threads.setCount(threads);
+        const double w0 = wallMicroseconds();
+        for (const EffectUse& u : model.effects)
+          if (u.enabled && isContact(u)) u.effect->beginStep(model, u.values, copy, model.timeStep);
+        (threads == 1 ? wall1Us : wall2Us) += wallMicroseconds() - w0;
+      }
       copy = s;
       copy.contactScratch.coherentWall = false;
       t0 = cpuMicroseconds();
@@ -74,11 +91,14 @@ void benchDenseFigures(const std::function<void(const std::string&, double)>& se
     set("dense_step_us" + k, stepUs / steps);
     set("dense_detect_us" + k, detectUs / steps);
     set("dense_detect_fresh_us" + k, freshUs / steps);
+    set("dense_detect_wall_1thread_us" + k, wall1Us / steps);
+    set("dense_detect_wall_2threads_us" + k, wall2Us / steps);
     set("dense_segments" + k, segments);
     set("dense_run_ok" + k, ok ? 1.0 : 0.0);
     if (!json)
-      std::printf("  %8d %8d %7.1f%% %10.0f %12.0f %14.0f %14.2f %8.2f%s\n", mm, segments, 100 * packing, stepUs / steps,
-                  detectUs / steps, freshUs / steps, double(contacts) / steps / segments, stepUs / steps / segments,
+      std::printf("  %8d %8d %7.1f%% %10.0f %12.0f %14.0f %12.0f %12.0f %14.2f %8.2f%s\n", mm, segments, 100 * packing,
+                  stepUs / steps, detectUs / steps, freshUs / steps, wall1Us / steps, wall2Us / steps,
+                  double(contacts) / steps / segments, stepUs / steps / segments,
                   ok ? "" : "  (a step was refused)");
   }
 }

@@ -19,6 +19,8 @@ std::vector<CandidateResult> runCandidatesShowingProgress(const planning::PlanSe
   std::vector<std::optional<CandidateResult>> results(candidates.size());
   std::atomic<size_t> next{0}, done{0};
   Progress progress("plan " + label, double(candidates.size()), "runs");
+  const int n = std::max(1, std::min<int>(jobs, int(candidates.size())));
+  const int detectionThreads = planning::detectionThreadsFor(n);
   auto worker = [&] {
     for (size_t i = next++; i < candidates.size() && !stopRequested(); i = next++) {
       const Candidate& c = candidates[i];
@@ -27,11 +29,10 @@ std::vector<CandidateResult> runCandidatesShowingProgress(const planning::PlanSe
                                    : "coil " + c.name();
       progress.note("run " + std::to_string(i + 1) + " of " + std::to_string(candidates.size()) + ": deploying " +
                     what + " (" + c.variant + ")");
-      results[i] = planning::runCandidate(setup, c);
+      results[i] = planning::runCandidate(setup, c, {}, detectionThreads);
       progress.update(double(++done), "finished " + c.name() + " (" + c.variant + ")");
     }
   };
-  const int n = std::max(1, std::min<int>(jobs, int(candidates.size())));
   std::vector<std::thread> threads;
   for (int k = 1; k < n; ++k) threads.emplace_back(worker);
   worker();

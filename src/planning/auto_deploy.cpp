@@ -3,6 +3,7 @@
 #include "planning/auto_deploy.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -29,6 +30,14 @@ std::string sText(double s) {
   std::snprintf(b, sizeof b, "t = %.3f s", s);
   return b;
 }
+
+// Adds the wall time from its construction to its end to `total`.
+struct Clock {
+  explicit Clock(double& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
+  ~Clock() { total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+  double& total_;
+  std::chrono::steady_clock::time_point start_;
+};
 
 }  // namespace
 
@@ -76,6 +85,10 @@ AutoDeployResult autoDeploy(const Model& model, State& state, const AutoDeployOp
   FeltTipForce feel(probe);
   std::vector<std::vector<double>> forces;
   enum class Phase { Stroke, Feel, Twist, Pause, PullBack, Settle, After } phase = Phase::Feel;
+  const auto countStep = [](AutoDeployResult::Effort& e, Phase p) {
+    long* counts[] = {&e.pushing, &e.feeling, &e.twisting, &e.pausing, &e.pullingBack, &e.settling, &e.afterDetach};
+    ++*counts[int(p)];
+  };
   double phaseEnd = 0, twistSign = 1;
   int twistsHere = 0, pullBacksHere = 0;
   double progressMark = ds.deployed;  // deployed length at the last pull-back reset
@@ -115,7 +128,14 @@ AutoDeployResult autoDeploy(const Model& model, State& state, const AutoDeployOp
       return r;
     }
     const double before = ds.deployed, twistBefore = ds.twist;
+    const long substeppedBefore = state.substepped;
+    const auto t0 = std::chrono::steady_clock::now();
     const StepReport rep = advance(model, state);  // a shock at detach is split into substeps by step() itself
+    const auto t1 = std::chrono::steady_clock::now();
+    r.effort.stepSeconds += std::chrono::duration<double>(t1 - t0).count();
+    r.effort.substepped += state.substepped - substeppedBefore;
+    countStep(r.effort, phase);
+    const Clock operatorWork(r.effort.operatorSeconds);
     for (const std::string& n : state.device.notes) r.log.push_back(sText(t) + ": " + n);
     state.device.notes.clear();
     const bool pusherMoved = ds.deployed != before || ds.twist != twistBefore;  // pushed, pulled or twisted

@@ -64,6 +64,14 @@ struct AutoDeployResult {
   double maxWallPenetration = 0, maxWallPenetrationOfRadius = 0;
   std::vector<TimedCommand> timeline;  // what was commanded, replayable
   std::vector<std::string> log;
+  // Where a run's time goes: steps by what the operator was doing, steps
+  // retaken in substeps, and the wall time of the steps against that of
+  // the operator's own work (feeling, wall-load bookkeeping, decisions).
+  struct Effort {
+    long pushing = 0, feeling = 0, twisting = 0, pausing = 0, pullingBack = 0, settling = 0, afterDetach = 0;
+    long substepped = 0;
+    double stepSeconds = 0, operatorSeconds = 0;
+  } effort;
 };
 
 // Tip force of a deployment now: the elastic force of the first beam outside the catheter on the tip node.

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -81,13 +82,20 @@ void accumulate(AutoDeployResult& total, AutoDeployResult&& one) {
   w.sum += one.wall.sum;
   w.samples += one.wall.samples;
   w.timeAbove += one.wall.timeAbove;
+  AutoDeployResult::Effort& e = total.effort;
+  const AutoDeployResult::Effort& o = one.effort;
+  e.pushing += o.pushing, e.feeling += o.feeling, e.twisting += o.twisting, e.pausing += o.pausing;
+  e.pullingBack += o.pullingBack, e.settling += o.settling, e.afterDetach += o.afterDetach;
+  e.substepped += o.substepped;
+  e.stepSeconds += o.stepSeconds, e.operatorSeconds += o.operatorSeconds;
   for (const TimedCommand& c : one.timeline) total.timeline.push_back({c.time, c.command});
   for (std::string& l : one.log) total.log.push_back(std::move(l));
 }
 
 }  // namespace
 
-CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const ContactForceSource& contacts) {
+CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const ContactForceSource& contacts,
+                             int detectionThreads) {
   CandidateResult r;
   r.name = c.name();
   r.variant = c.variant;
@@ -122,6 +130,7 @@ CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const C
       r.model = compileModel(def);
       r.model.device = d;
       r.state = makeState(r.model);
+      r.state.contactScratch.threads.setCount(detectionThreads);
       for (size_t i = 0; i < placed.size(); ++i) {
         RodState& s = r.state.rods[firstPlaced + i];
         const RodState& p = placed[i].pose;
@@ -163,14 +172,27 @@ CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const C
   return r;
 }
 
+int detectionThreadsFor(int runsAtOnce) {
+  const unsigned cores = std::thread::hardware_concurrency();
+  if (runsAtOnce != 1 || cores < 2) return 1;
+  // A core busy with other work is no second core: on the shared 2-core
+  // machine at a load of 5-10, detection split over two threads took as
+  // long as on one, and a small one three times as long (docs/planning.md).
+  double load = 0;
+  if (getloadavg(&load, 1) == 1 && load > double(cores) - 1) return 1;
+  return 2;
+}
+
 std::vector<CandidateResult> runCandidates(const PlanSetup& setup, const std::vector<Candidate>& candidates, int jobs,
                                            const ContactForceSource& contacts) {
   std::vector<CandidateResult> results(candidates.size());
   std::atomic<size_t> next{0};
-  auto worker = [&] {
-    for (size_t i = next++; i < candidates.size(); i = next++) results[i] = runCandidate(setup, candidates[i], contacts);
-  };
   const int n = std::max(1, std::min<int>(jobs, int(candidates.size())));
+  const int detectionThreads = detectionThreadsFor(n);
+  auto worker = [&] {
+    for (size_t i = next++; i < candidates.size(); i = next++)
+      results[i] = runCandidate(setup, candidates[i], contacts, detectionThreads);
+  };
   std::vector<std::thread> threads;
   for (int k = 1; k < n; ++k) threads.emplace_back(worker);
   worker();
@@ -253,6 +275,15 @@ ordered_json planJson(const PlanSetup& setup, const std::vector<CandidateResult>
     c["occlusion"] = occlusionClassName(r.occlusion);
     c["simulated_s"] = round6(r.deploy.time);
     c["wall_s"] = round6(r.wallSeconds);
+    // Where the run's time went (docs/planning.md, issue 16).
+    const AutoDeployResult::Effort& e = r.deploy.effort;
+    c["steps"] = r.deploy.steps;
+    c["substepped_steps"] = e.substepped;
+    c["steps_by_phase"] = {{"pushing", e.pushing},       {"feeling", e.feeling},   {"twisting", e.twisting},
+                           {"pausing", e.pausing},       {"pulling_back", e.pullingBack}, {"settling", e.settling},
+                           {"after_detach", e.afterDetach}};
+    c["step_wall_s"] = round6(e.stepSeconds);
+    c["operator_wall_s"] = round6(e.operatorSeconds);
     coils.push_back(std::move(c));
   }
   plan["coils"] = std::move(coils);

@@ -60,8 +60,16 @@ struct CandidateResult {
   State state;
 };
 
-// Deploys one candidate; never throws (errors land in `error`).
-CandidateResult runCandidate(const PlanSetup& setup, const Candidate& candidate, const ContactForceSource& contacts = {});
+// Deploys one candidate; never throws (errors land in `error`). Contact
+// detection uses `detectionThreads` (1 or 2) threads; the results are the
+// same bit for bit (physics/contact/detect_parallel.h).
+CandidateResult runCandidate(const PlanSetup& setup, const Candidate& candidate, const ContactForceSource& contacts = {},
+                             int detectionThreads = 1);
+
+// Threads for each run's contact detection when `runsAtOnce` runs go at
+// once: 2 for a single run on a machine of two cores or more whose load
+// leaves a core idle, else 1. (The results are the same either way.)
+int detectionThreadsFor(int runsAtOnce);
 
 // All candidates on up to `jobs` threads; results in the candidates' order.
 std::vector<CandidateResult> runCandidates(const PlanSetup& setup, const std::vector<Candidate>& candidates, int jobs,

@@ -46,9 +46,13 @@ double segmentSweep(const RodState& r, int e, double sweep) { return sweep * std
 // loop snapping) is fast and is paired with every segment directly: one
 // such segment used to set the cells of all, and in a packed sac a cell
 // three times as wide holds 27 times as many segments.
+// With `threads` (else on this thread alone), the grid's cells are split
+// into two parts of about equal segments, visited on two threads: visit then
+// gets the part (0 or 1; the fast segments' pairs are part 0) and must only
+// write what that part owns.
 template <class Visit>
 void forEachNearPair(const Model& model, const State& state, bool sameRod, double margin, double sweep,
-                     double radiusScale, Visit visit) {
+                     double radiusScale, Visit visit, DetectionThreads* threads = nullptr) {
   std::vector<GridSegment>& grid = state.contactScratch.grid;
   std::vector<GridSegment>& fast = state.contactScratch.fast;
   grid.clear();
@@ -82,7 +86,7 @@ void forEachNearPair(const Model& model, const State& state, bool sameRod, doubl
     if (sameRod != (ki == kj)) return;
     if (sameRod && sj - si <= 1) return;
     if (model.rods[ki].role == RodRole::Catheter && model.rods[kj].role == RodRole::Catheter) return;
-    visit(ki, si, kj, sj);
+    visit(0, ki, si, kj, sj);
   };
   for (const GridSegment& f : fast) {
     const RodState& rf = state.rods[f.rod];
@@ -112,43 +116,71 @@ void forEachNearPair(const Model& model, const State& state, bool sameRod, doubl
       grid.push_back({cellKey(cellIndex(m.x()), cellIndex(m.y()), cellIndex(m.z())), int(k), e, mid, extent});
     }
   }
-  std::sort(grid.begin(), grid.end(), [](const GridSegment& a, const GridSegment& b) { return a.cell < b.cell; });
-  // The 27 neighbour cells are looked up once per occupied cell, not once
-  // per segment: in a packed sac a cell holds tens of segments (the binary
-  // searches were a fifth of a multi-coil plan's time, docs/contact.md).
-  // Each segment still visits its neighbours in the same order.
-  using Range = std::pair<std::vector<GridSegment>::const_iterator, std::vector<GridSegment>::const_iterator>;
-  Range near[27];
-  for (auto run = grid.cbegin(); run != grid.cend();) {
-    auto runEnd = run;
-    while (runEnd != grid.cend() && runEnd->cell == run->cell) ++runEnd;
-    const RodState& r0 = state.rods[run->rod];
-    const Vec3 m = 0.5 * (r0.x[run->segment] + r0.x[run->segment + 1]) / cell;
-    const long cx = std::lround(std::floor(m.x())), cy = std::lround(std::floor(m.y())), cz = std::lround(std::floor(m.z()));
-    int n = 0;
-    for (long dx = -1; dx <= 1; ++dx)
-      for (long dy = -1; dy <= 1; ++dy)
-        for (long dz = -1; dz <= 1; ++dz) {
-          const std::uint64_t key = cellKey(cx + dx, cy + dy, cz + dz);
-          near[n++] = std::equal_range(grid.cbegin(), grid.cend(), GridSegment{key, 0, 0},
-                                       [](const GridSegment& a, const GridSegment& b) { return a.cell < b.cell; });
+  // By cell, and within a cell by rod and segment: a segment's partners of
+  // its own rod (self-contact) or of the rods after it (between rods) are
+  // then one stretch of each neighbour cell, and the others are not walked.
+  const auto before = [](const GridSegment& a, const GridSegment& b) {
+    if (a.cell != b.cell) return a.cell < b.cell;
+    return a.rod != b.rod ? a.rod < b.rod : a.segment < b.segment;
+  };
+  std::sort(grid.begin(), grid.end(), before);
+  // The 27 neighbour cells are looked up once per occupied cell and rod,
+  // not once per segment: in a packed sac a cell holds tens of segments
+  // (the binary searches were a fifth of a multi-coil plan's time,
+  // docs/contact.md).
+  using Iterator = std::vector<GridSegment>::const_iterator;
+  using Range = std::pair<Iterator, Iterator>;
+  const auto byCell = [](const GridSegment& a, const GridSegment& b) { return a.cell < b.cell; };
+  const auto byRod = [](const GridSegment& a, const GridSegment& b) { return a.rod < b.rod; };
+  // The cells of the first half of the segments, and the rest.
+  const bool split = threads && threads->splits(long(grid.size()));
+  auto middle = grid.cbegin() + long(split ? grid.size() / 2 : grid.size());
+  while (middle != grid.cbegin() && middle != grid.cend() && (middle - 1)->cell == middle->cell) ++middle;
+  const auto visitCells = [&](int part, ContactScratch&) {
+    Range cells[27], near[27];
+    const Iterator end = part ? grid.cend() : middle;
+    for (Iterator run = part ? middle : grid.cbegin(); run != end;) {
+      Iterator runEnd = run;
+      while (runEnd != grid.cend() && runEnd->cell == run->cell) ++runEnd;
+      const RodState& r0 = state.rods[run->rod];
+      const Vec3 m = 0.5 * (r0.x[run->segment] + r0.x[run->segment + 1]) / cell;
+      const long cx = std::lround(std::floor(m.x())), cy = std::lround(std::floor(m.y())), cz = std::lround(std::floor(m.z()));
+      int n = 0;
+      for (long dx = -1; dx <= 1; ++dx)
+        for (long dy = -1; dy <= 1; ++dy)
+          for (long dz = -1; dz <= 1; ++dz)
+            cells[n++] = std::equal_range(grid.cbegin(), grid.cend(), GridSegment{cellKey(cx + dx, cy + dy, cz + dz), 0, 0}, byCell);
+      for (Iterator group = run; group != runEnd;) {
+        // The segments of one rod in this cell, and their stretch of each neighbour cell.
+        const GridSegment key{0, group->rod, 0};
+        const Iterator groupEnd = std::upper_bound(group, runEnd, key, byRod);
+        for (int c = 0; c < 27; ++c)
+          near[c] = sameRod ? std::equal_range(cells[c].first, cells[c].second, key, byRod)
+                            : Range{std::upper_bound(cells[c].first, cells[c].second, key, byRod), cells[c].second};
+        const bool catheter = model.rods[group->rod].role == RodRole::Catheter;
+        for (Iterator gIt = group; gIt != groupEnd; ++gIt) {
+          const GridSegment& gi = *gIt;
+          for (const Range& range : near)
+            for (Iterator it = range.first; it != range.second; ++it) {
+              const GridSegment& gj = *it;
+              // Each pair once, i before j; in one rod, not neighbours.
+              if (sameRod && gj.segment - gi.segment <= 1) continue;
+              if (catheter && model.rods[gj.rod].role == RodRole::Catheter) continue;
+              const double apart = gi.extent + gj.extent + margin;
+              if ((gj.mid - gi.mid).squaredNorm() > apart * apart) continue;
+              visit(part, gi.rod, gi.segment, gj.rod, gj.segment);
+            }
         }
-    for (auto gIt = run; gIt != runEnd; ++gIt) {
-      const GridSegment& gi = *gIt;
-      for (const Range& range : near)
-        for (auto it = range.first; it != range.second; ++it) {
-          const GridSegment& gj = *it;
-          // Each pair once: i before j.
-          if (gj.rod < gi.rod || (gj.rod == gi.rod && gj.segment <= gi.segment)) continue;
-          if (sameRod != (gj.rod == gi.rod)) continue;
-          if (sameRod && gj.segment - gi.segment <= 1) continue;
-          if (model.rods[gi.rod].role == RodRole::Catheter && model.rods[gj.rod].role == RodRole::Catheter) continue;
-          const double apart = gi.extent + gj.extent + margin;
-          if ((gj.mid - gi.mid).squaredNorm() > apart * apart) continue;
-          visit(gi.rod, gi.segment, gj.rod, gj.segment);
-        }
+        group = groupEnd;
+      }
+      run = runEnd;
     }
-    run = runEnd;
+  };
+  if (threads) {
+    threads->run(split, state.contactScratch, visitCells);
+  } else {
+    visitCells(0, state.contactScratch);
+    visitCells(1, state.contactScratch);
   }
 }
 
@@ -179,23 +211,36 @@ void detectRodContacts(const Model& model, State& state, double h, bool sameRod,
     for (RodState& r : state.rods) (sameRod ? r.contact.selfForce : r.contact.rodForce).assign(r.x.size(), 0.0);
     return;
   }
-  // The reach includes what a segment sweeps in the step at its start
-  // velocity, so a pair that would meet within the step is found (response.h).
-  forEachNearPair(model, state, sameRod, margin, h, law.radiusScale, [&](int ki, int si, int kj, int sj) {
+  // Between rods, a pair needs two rods taking part (a plan's first coil is alone in its sac).
+  int rodsTakingPart = 0;
+  for (const RodState& r : state.rods) rodsTakingPart += takesPart(r);
+  const bool searched = sameRod || rodsTakingPart >= 2;
+  // Whether the pair is in contact or closing within the step; its closest points in p.
+  const auto inContact = [&](int ki, int si, int kj, int sj, SegmentPair& p) {
     const RodState &ri = state.rods[ki], &rj = state.rods[kj];
     const Vec3 &a0 = ri.x[si], &a1 = ri.x[si + 1], &b0 = rj.x[sj], &b1 = rj.x[sj + 1];
     const double ra = segmentRadius(ri, si), rb = segmentRadius(rj, sj);
-    if (!sameRod && shareAnEnd(a0, a1, b0, b1, 1e-3 * std::min(ra, rb))) return;
-    const SegmentPair p = closestSegmentSegment(a0, a1, b0, b1);
-    const double touch = law.radiusScale * (ra + rb);
-    const double gap = p.distance - touch;
-    if (p.distance <= 1e-12 * ra) return;
+    if (!sameRod && shareAnEnd(a0, a1, b0, b1, 1e-3 * std::min(ra, rb))) return false;
+    p = closestSegmentSegment(a0, a1, b0, b1);
+    const double gap = p.distance - law.radiusScale * (ra + rb);
+    if (p.distance <= 1e-12 * ra) return false;
     // Closing speed of the pair along the line of centres, at the start of the step.
     const Vec3 normal = (p.p - p.q) / p.distance;
     const Vec3 va = (1 - p.s) * ri.v[si] + p.s * ri.v[si + 1];
     const Vec3 vb = (1 - p.t) * rj.v[sj] + p.t * rj.v[sj + 1];
     const bool closing = -gap - h * normal.dot(va - vb) > 0;
-    if (gap > margin && !closing) return;
+    return gap <= margin || closing;
+  };
+  // The two contacts of a pair in contact, one in each rod's list.
+  const auto add = [&](int ki, int si, int kj, int sj, const SegmentPair& p) {
+    const RodState &ri = state.rods[ki], &rj = state.rods[kj];
+    const double ra = segmentRadius(ri, si), rb = segmentRadius(rj, sj);
+    const double touch = law.radiusScale * (ra + rb);
+    const double gap = p.distance - touch;
+    const Vec3 normal = (p.p - p.q) / p.distance;
+    const Vec3 va = (1 - p.s) * ri.v[si] + p.s * ri.v[si + 1];
+    const Vec3 vb = (1 - p.t) * rj.v[sj] + p.t * rj.v[sj + 1];
+    const bool closing = -gap - h * normal.dot(va - vb) > 0;
     ContactPoint c;
     c.segment = si, c.other = kj, c.otherSegment = sj;
     c.s = p.s, c.otherS = p.t;
@@ -213,7 +258,28 @@ void detectRodContacts(const Model& model, State& state, double h, bool sameRod,
     d.otherVelocity = va;
     (sameRod ? state.rods[ki].contact.self : state.rods[ki].contact.rod).push_back(c);
     (sameRod ? state.rods[kj].contact.self : state.rods[kj].contact.rod).push_back(d);
-  });
+  };
+  // The reach includes what a segment sweeps in the step at its start
+  // velocity, so a pair that would meet within the step is found (response.h).
+  // On two threads each part keeps its pairs, added after in the parts'
+  // order: the lists are sorted below by a total order anyway, so they come
+  // out the same whatever the thread count.
+  ContactScratch& scratch = state.contactScratch;
+  scratch.parts[0].pairs.clear();
+  scratch.parts[1].pairs.clear();
+  const bool twoThreads = scratch.threads.count() > 1;
+  if (searched)
+    forEachNearPair(
+        model, state, sameRod, margin, h, law.radiusScale,
+        [&](int part, int ki, int si, int kj, int sj) {
+          SegmentPair p;
+          if (!inContact(ki, si, kj, sj, p)) return;
+          if (twoThreads) scratch.parts[part].pairs.push_back({ki, si, kj, sj, p});
+          else add(ki, si, kj, sj, p);
+        },
+        &scratch.threads);
+  for (const DetectionPart& part : scratch.parts)
+    for (const FoundPair& f : part.pairs) add(f.ki, f.si, f.kj, f.sj, f.p);
   for (size_t k = 0; k < state.rods.size(); ++k) {
     RodState& r = state.rods[k];
     std::vector<ContactPoint>& list = sameRod ? r.contact.self : r.contact.rod;
@@ -261,7 +327,7 @@ std::string checkRodContacts(const Model& model, const State& state, bool sameRo
   const bool scan = 2 * moved > margin + 2 * kMissedContact * radiusScale * smallest;
   std::string missed;
   double deepest = 0;
-  const auto check = [&](int ki, int si, int kj, int sj) {
+  const auto check = [&](int, int ki, int si, int kj, int sj) {
     const RodState &ri = state.rods[ki], &rj = state.rods[kj];
     const Vec3 &a0 = ri.x[si], &a1 = ri.x[si + 1], &b0 = rj.x[sj], &b1 = rj.x[sj + 1];
     const double ra = segmentRadius(ri, si), rb = segmentRadius(rj, sj);
@@ -285,7 +351,7 @@ std::string checkRodContacts(const Model& model, const State& state, bool sameRo
       for (const ContactPoint& c : sameRod ? state.rods[k].contact.self : state.rods[k].contact.rod)
         if (int(k) < c.other || (int(k) == c.other && c.segment < c.otherSegment))
           if (takesPart(state.rods[c.other]) && c.otherSegment + 1 < state.rods[c.other].activeNodes)
-            check(int(k), c.segment, c.other, c.otherSegment);
+            check(0, int(k), c.segment, c.other, c.otherSegment);
     }
   }
   return missed;

@@ -109,6 +109,152 @@ ContactPoint makeContact(const ObstacleTree& tree, const NearestTriangle& n, con
   return c;
 }
 
+// The wall contacts of segment e of rod r, appended to `out` (the rod's
+// contacts of the segments before it in this part of the detection). Reads
+// and writes only segment e's own entries of the rod's coherence arrays, so
+// two threads may detect disjoint segments of one rod.
+void detectSegment(const Model& model, RodState& r, int e, double h, double margin, const ContactLaw& law, bool coherent,
+                   ContactScratch& scratch, std::vector<ContactPoint>& out) {
+  RodContacts& rc = r.contact;
+  const std::vector<int>& candidates = scratch.candidates;
+  const std::vector<SegmentTriangle>& hits = scratch.hits;
+  const std::vector<SegmentTriangle>& nodeHits = scratch.nodeHits;
+  const Vec3 &a = r.x[e], &b = r.x[e + 1];
+  const double radius = (1 + kWallSkin) * 0.5 * (r.nodes[e].radius + r.nodes[e + 1].radius);
+  // What the segment can sweep in this step at its start velocity: a
+  // contact it would reach must be in this step's implicit solve.
+  const double sweep = margin + h * std::max(r.v[e].norm(), r.v[e + 1].norm());
+  const double reach = radius + sweep;
+  // Temporal coherence: no triangle lay within wallClear of the
+  // segment where it was; if it has moved less than that minus its
+  // reach, none is within reach now (exact, so nothing is missed).
+  if (coherent && rc.wallClear[e] > 0) {
+    const double moved = std::max((a - rc.wallClearAt[2 * e]).norm(), (b - rc.wallClearAt[2 * e + 1]).norm());
+    if (moved + reach < rc.wallClear[e]) return;
+  }
+  double clear = INFINITY;
+  const size_t before = out.size();
+  for (size_t o = 0; o < model.obstacles.size(); ++o) {
+    if (!model.obstacles[o].contact || o >= model.obstacleTrees.size()) continue;
+    const ObstacleTree& tree = *model.obstacleTrees[o];
+    // First within the reach alone, from last step's nearest
+    // triangle: a segment on the wall finds it among a third of the
+    // candidates. What follows only uses triangles within the reach,
+    // so it comes out as from the wider query (docs/contact.md).
+    int& hint = rc.wallHint[e * model.obstacles.size() + o];
+    TriangleCache* cache = coherent ? &rc.wallCache[e * model.obstacles.size() + o] : nullptr;
+    NearestTriangle n;
+    if (coherent) n = nearestWallFeature(tree, a, b, reach, scratch, reach + kLookAhead, hint, cache);
+    if (n.triangle < 0 || n.hit.distance > reach) {
+      // Queried beyond the reach, so the clearance found lasts a while.
+      n = nearestWallFeature(tree, a, b, reach + kLookAhead, scratch, reach + kLookAhead, -1, cache);
+    }
+    hint = n.triangle;
+    clear = std::min(clear, n.triangle < 0 ? reach + kLookAhead : n.hit.distance);
+    if (n.triangle < 0 || n.hit.distance > reach) {
+      // Nothing near: either free, or pushed wholly through the wall
+      // since the last step. Only the second needs the wider search.
+      ContactPoint probe;
+      probe.segment = e, probe.other = int(o);
+      if (!findPrevious(rc.previous, probe, r)) continue;
+      n = nearestWallFeature(tree, a, b, 4 * radius + margin, scratch, 4 * radius + margin, -1, cache);
+      if (n.triangle < 0) continue;
+    }
+    const size_t listed = out.size();
+    ContactPoint c = makeContact(tree, n, candidates, hits, e, int(o), radius);
+    if (!markClosing(c, r, h) && c.gap > margin) continue;
+    updateContact(c, findPrevious(rc.previous, c, r), r, law, h);
+    out.push_back(c);
+    // Concave neighbours: faces on the free side of the nearest face's
+    // plane (the wall folds towards the lumen) bound the free space too;
+    // their planes keep a node sliding off the nearest face from going
+    // through the next one within the step (detect.h).
+    const TriangleMesh& m = tree.mesh();
+    const Vec3& nA = tree.normal(n.triangle);
+    const Vec3& vA = m.vertices[m.triangles[n.triangle][0]];
+    int extra = 0;
+    for (size_t ci = 0; ci < candidates.size(); ++ci) {
+      const int t = candidates[ci];
+      if (t == n.triangle || extra >= 3) continue;
+      // (A triangle whose box is farther than the reach is too: its
+      // hit would be skipped below, so it is not measured.)
+      if (std::isnan(hits[ci].distance) && scratch.boxGap2[ci] > reach * reach) continue;
+      const Vec3& nt = tree.normal(t);
+      if (nt.dot(nA) > 0.99999 || nt.dot(nA) < 0.5) continue;
+      const auto& f = m.triangles[t];
+      const Vec3 centroid = (m.vertices[f[0]] + m.vertices[f[1]] + m.vertices[f[2]]) / 3;
+      if (nA.dot(centroid - vA) >= 0) continue;  // a ridge into the free space: its plane would cut it
+      const SegmentTriangle hit = std::isnan(hits[ci].distance)
+                                      ? closestSegmentTriangle(a, b, m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]])
+                                      : hits[ci];
+      if (hit.distance > reach) continue;
+      ContactPoint q;
+      q.segment = e, q.other = int(o), q.line = true, q.s = 0.5, q.radius = radius;
+      q.normal = -nt;
+      q.anchor = m.vertices[f[0]];
+      q.gap = std::min(q.normal.dot(a - q.anchor), q.normal.dot(b - q.anchor)) - radius;
+      // The plane is that face's only where the segment lies over it.
+      // Past its edges (a saddle, such as the fillet where a sac meets
+      // its vessel, is concave one way and convex the other) the plane
+      // cuts into the free space and claimed 0.04-0.39 mm penetrations
+      // of a face the capsule does not touch, with forces of 2-23 N.
+      // Such a plane is moved out to the face's true distance: it stays
+      // a barrier for the step's motion and pushes on nothing.
+      if (q.gap < 0 && hit.distance > radius) {
+        q.anchor -= (hit.distance - radius - q.gap) * q.normal;
+        q.gap = hit.distance - radius;
+      }
+      // Nor may it claim more than the segment's true penetration, the
+      // nearest feature's (c.gap, sided by its pseudo-normal): where the
+      // face is within the skin of one node (so kept above) its plane
+      // can still cut the free space at the other node, and claimed
+      // 50-120 um of a node resting on a neck fillet 8 um clear of
+      // the mesh.
+      if (q.gap < c.gap) {
+        q.anchor -= (c.gap - q.gap) * q.normal;
+        q.gap = c.gap;
+      }
+      if (!markClosing(q, r, h) && q.gap > margin) continue;
+      updateContact(q, findPrevious(rc.previous, q, r), r, law, h);
+      out.push_back(q);
+      ++extra;
+    }
+    // Each node's own wall. The planes above are tangent near the
+    // segment's nearest point; on a curved wall they lie up to
+    // L^2 / 2R off at the far node (36 um for a 0.5 mm segment in a
+    // 7 mm sac), a free end node has no other segment whose planes
+    // would bound it, and a node sliding along a plane tilted from
+    // the wall under it goes in by the slide times the tilt (a soft
+    // coil's free tip did, docs/contact.md). A node gets the plane of its own nearest
+    // feature, pressing that node only, unless a listed plane agrees
+    // with it within kNodePlane over the slide the end-of-step check
+    // lets pass unchecked (the margin and its tolerance).
+    const double slide = margin + kMissedContact * radius;
+    for (int j = 0; j < 2; ++j) {
+      // The segment's nearest point is this node: the same feature.
+      if (n.hit.s == j) continue;
+      const Vec3& x = j ? b : a;
+      const NearestTriangle own = nearestToNode(tree, x, j, n, reach, scratch);
+      if (own.triangle < 0 || own.hit.distance > reach) continue;
+      ContactPoint p = makeContact(tree, own, candidates, nodeHits, e, int(o), radius);
+      bool covered = false;
+      for (size_t i = listed; i < out.size() && !covered; ++i) {
+        const ContactPoint& q = out[i];
+        const double lessThanOwn = -p.gap - (q.radius - q.normal.dot(x - q.anchor));
+        covered = lessThanOwn + slide * q.normal.cross(p.normal).norm() <= kNodePlane * radius;
+      }
+      if (covered) continue;
+      p.node = j;
+      if (!markClosing(p, r, h) && p.gap > margin) continue;
+      updateContact(p, findPrevious(rc.previous, p, r), r, law, h);
+      out.push_back(p);
+    }
+  }
+  const bool free = out.size() == before && clear > reach;
+  rc.wallClear[e] = free ? std::min(clear, reach + kLookAhead) : 0.0;
+  rc.wallClearAt[2 * e] = a, rc.wallClearAt[2 * e + 1] = b;
+}
+
 }  // namespace
 
 double wallStiffness(double stiffness, double rigidityScale, const RodModel& rod) {
@@ -121,166 +267,59 @@ double wallStiffness(double stiffness, double rigidityScale, const RodModel& rod
 void detectWallContacts(const Model& model, State& state, double h, double margin, const ContactLaw& wallLaw,
                         double rigidityScale) {
   ContactScratch& scratch = state.contactScratch;
-  const std::vector<int>& candidates = scratch.candidates;
-  const std::vector<SegmentTriangle>& hits = scratch.hits;
-  const std::vector<SegmentTriangle>& nodeHits = scratch.nodeHits;
   const bool coherent = scratch.coherentWall;
-  for (size_t k = 0; k < state.rods.size(); ++k) {
+  const size_t rods = state.rods.size();
+  std::vector<ContactLaw> laws(rods, wallLaw);
+  int segments = 0;
+  for (size_t k = 0; k < rods; ++k) {
     RodState& r = state.rods[k];
-    ContactLaw law = wallLaw;
-    law.stiffness = wallStiffness(wallLaw.stiffness, rigidityScale, model.rods[k]);
+    laws[k].stiffness = wallStiffness(wallLaw.stiffness, rigidityScale, model.rods[k]);
     RodContacts& rc = r.contact;
     std::swap(rc.wall, rc.previous);
     rc.wall.clear();
-    if (r.active && model.rods[k].role != RodRole::Catheter) {
-      if (rc.wallClearNodes != r.activeNodes) {
-        rc.wallClear.assign(std::max(0, r.activeNodes - 1), 0.0);
-        rc.wallClearAt.assign(2 * rc.wallClear.size(), Vec3::Zero());
-        rc.wallClearNodes = r.activeNodes;
-      }
-      // A hint is only a guess (a node inserted at the catheter tip
-      // renumbers the segments behind it), so it is kept across renumbering.
-      rc.wallHint.resize(rc.wallClear.size() * model.obstacles.size(), -1);
-      // So is a cached walk of the tree: it is used only for boxes within its own.
-      rc.wallCache.resize(rc.wallHint.size());
-      for (int e = 0; e + 1 < r.activeNodes; ++e) {
-        const Vec3 &a = r.x[e], &b = r.x[e + 1];
-        const double radius = (1 + kWallSkin) * 0.5 * (r.nodes[e].radius + r.nodes[e + 1].radius);
-        // What the segment can sweep in this step at its start velocity: a
-        // contact it would reach must be in this step's implicit solve.
-        const double sweep = margin + h * std::max(r.v[e].norm(), r.v[e + 1].norm());
-        const double reach = radius + sweep;
-        // Temporal coherence: no triangle lay within wallClear of the
-        // segment where it was; if it has moved less than that minus its
-        // reach, none is within reach now (exact, so nothing is missed).
-        if (coherent && rc.wallClear[e] > 0) {
-          const double moved = std::max((a - rc.wallClearAt[2 * e]).norm(), (b - rc.wallClearAt[2 * e + 1]).norm());
-          if (moved + reach < rc.wallClear[e]) continue;
-        }
-        double clear = INFINITY;
-        const size_t before = rc.wall.size();
-        for (size_t o = 0; o < model.obstacles.size(); ++o) {
-          if (!model.obstacles[o].contact || o >= model.obstacleTrees.size()) continue;
-          const ObstacleTree& tree = *model.obstacleTrees[o];
-          // First within the reach alone, from last step's nearest
-          // triangle: a segment on the wall finds it among a third of the
-          // candidates. What follows only uses triangles within the reach,
-          // so it comes out as from the wider query (docs/contact.md).
-          int& hint = rc.wallHint[e * model.obstacles.size() + o];
-          TriangleCache* cache = coherent ? &rc.wallCache[e * model.obstacles.size() + o] : nullptr;
-          NearestTriangle n;
-          if (coherent) n = nearestWallFeature(tree, a, b, reach, scratch, reach + kLookAhead, hint, cache);
-          if (n.triangle < 0 || n.hit.distance > reach) {
-            // Queried beyond the reach, so the clearance found lasts a while.
-            n = nearestWallFeature(tree, a, b, reach + kLookAhead, scratch, reach + kLookAhead, -1, cache);
-          }
-          hint = n.triangle;
-          clear = std::min(clear, n.triangle < 0 ? reach + kLookAhead : n.hit.distance);
-          if (n.triangle < 0 || n.hit.distance > reach) {
-            // Nothing near: either free, or pushed wholly through the wall
-            // since the last step. Only the second needs the wider search.
-            ContactPoint probe;
-            probe.segment = e, probe.other = int(o);
-            if (!findPrevious(rc.previous, probe, r)) continue;
-            n = nearestWallFeature(tree, a, b, 4 * radius + margin, scratch, 4 * radius + margin, -1, cache);
-            if (n.triangle < 0) continue;
-          }
-          const size_t listed = rc.wall.size();
-          ContactPoint c = makeContact(tree, n, candidates, hits, e, int(o), radius);
-          if (!markClosing(c, r, h) && c.gap > margin) continue;
-          updateContact(c, findPrevious(rc.previous, c, r), r, law, h);
-          rc.wall.push_back(c);
-          // Concave neighbours: faces on the free side of the nearest face's
-          // plane (the wall folds towards the lumen) bound the free space too;
-          // their planes keep a node sliding off the nearest face from going
-          // through the next one within the step (detect.h).
-          const TriangleMesh& m = tree.mesh();
-          const Vec3& nA = tree.normal(n.triangle);
-          const Vec3& vA = m.vertices[m.triangles[n.triangle][0]];
-          int extra = 0;
-          for (size_t ci = 0; ci < candidates.size(); ++ci) {
-            const int t = candidates[ci];
-            if (t == n.triangle || extra >= 3) continue;
-            // (A triangle whose box is farther than the reach is too: its
-            // hit would be skipped below, so it is not measured.)
-            if (std::isnan(hits[ci].distance) && scratch.boxGap2[ci] > reach * reach) continue;
-            const Vec3& nt = tree.normal(t);
-            if (nt.dot(nA) > 0.99999 || nt.dot(nA) < 0.5) continue;
-            const auto& f = m.triangles[t];
-            const Vec3 centroid = (m.vertices[f[0]] + m.vertices[f[1]] + m.vertices[f[2]]) / 3;
-            if (nA.dot(centroid - vA) >= 0) continue;  // a ridge into the free space: its plane would cut it
-            const SegmentTriangle hit = std::isnan(hits[ci].distance)
-                                            ? closestSegmentTriangle(a, b, m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]])
-                                            : hits[ci];
-            if (hit.distance > reach) continue;
-            ContactPoint q;
-            q.segment = e, q.other = int(o), q.line = true, q.s = 0.5, q.radius = radius;
-            q.normal = -nt;
-            q.anchor = m.vertices[f[0]];
-            q.gap = std::min(q.normal.dot(a - q.anchor), q.normal.dot(b - q.anchor)) - radius;
-            // The plane is that face's only where the segment lies over it.
-            // Past its edges (a saddle, such as the fillet where a sac meets
-            // its vessel, is concave one way and convex the other) the plane
-            // cuts into the free space and claimed 0.04-0.39 mm penetrations
-            // of a face the capsule does not touch, with forces of 2-23 N.
-            // Such a plane is moved out to the face's true distance: it stays
-            // a barrier for the step's motion and pushes on nothing.
-            if (q.gap < 0 && hit.distance > radius) {
-              q.anchor -= (hit.distance - radius - q.gap) * q.normal;
-              q.gap = hit.distance - radius;
-            }
-            // Nor may it claim more than the segment's true penetration, the
-            // nearest feature's (c.gap, sided by its pseudo-normal): where the
-            // face is within the skin of one node (so kept above) its plane
-            // can still cut the free space at the other node, and claimed
-            // 50-120 um of a node resting on a neck fillet 8 um clear of
-            // the mesh.
-            if (q.gap < c.gap) {
-              q.anchor -= (c.gap - q.gap) * q.normal;
-              q.gap = c.gap;
-            }
-            if (!markClosing(q, r, h) && q.gap > margin) continue;
-            updateContact(q, findPrevious(rc.previous, q, r), r, law, h);
-            rc.wall.push_back(q);
-            ++extra;
-          }
-          // Each node's own wall. The planes above are tangent near the
-          // segment's nearest point; on a curved wall they lie up to
-          // L^2 / 2R off at the far node (36 um for a 0.5 mm segment in a
-          // 7 mm sac), a free end node has no other segment whose planes
-          // would bound it, and a node sliding along a plane tilted from
-          // the wall under it goes in by the slide times the tilt (a soft
-          // coil's free tip did, docs/contact.md). A node gets the plane of its own nearest
-          // feature, pressing that node only, unless a listed plane agrees
-          // with it within kNodePlane over the slide the end-of-step check
-          // lets pass unchecked (the margin and its tolerance).
-          const double slide = margin + kMissedContact * radius;
-          for (int j = 0; j < 2; ++j) {
-            // The segment's nearest point is this node: the same feature.
-            if (n.hit.s == j) continue;
-            const Vec3& x = j ? b : a;
-            const NearestTriangle own = nearestToNode(tree, x, j, n, reach, scratch);
-            if (own.triangle < 0 || own.hit.distance > reach) continue;
-            ContactPoint p = makeContact(tree, own, candidates, nodeHits, e, int(o), radius);
-            bool covered = false;
-            for (size_t i = listed; i < rc.wall.size() && !covered; ++i) {
-              const ContactPoint& q = rc.wall[i];
-              const double lessThanOwn = -p.gap - (q.radius - q.normal.dot(x - q.anchor));
-              covered = lessThanOwn + slide * q.normal.cross(p.normal).norm() <= kNodePlane * radius;
-            }
-            if (covered) continue;
-            p.node = j;
-            if (!markClosing(p, r, h) && p.gap > margin) continue;
-            updateContact(p, findPrevious(rc.previous, p, r), r, law, h);
-            rc.wall.push_back(p);
-          }
-        }
-        const bool free = rc.wall.size() == before && clear > reach;
-        rc.wallClear[e] = free ? std::min(clear, reach + kLookAhead) : 0.0;
-        rc.wallClearAt[2 * e] = a, rc.wallClearAt[2 * e + 1] = b;
-      }
+    if (!r.active || model.rods[k].role == RodRole::Catheter) continue;
+    if (rc.wallClearNodes != r.activeNodes) {
+      rc.wallClear.assign(std::max(0, r.activeNodes - 1), 0.0);
+      rc.wallClearAt.assign(2 * rc.wallClear.size(), Vec3::Zero());
+      rc.wallClearNodes = r.activeNodes;
     }
-    reportContacts(rc.wall, r, law, rc.wallForce);
+    // A hint is only a guess (a node inserted at the catheter tip
+    // renumbers the segments behind it), so it is kept across renumbering.
+    rc.wallHint.resize(rc.wallClear.size() * model.obstacles.size(), -1);
+    // So is a cached walk of the tree: it is used only for boxes within its own.
+    rc.wallCache.resize(rc.wallHint.size());
+    segments += std::max(0, r.activeNodes - 1);
+  }
+  // Two parts of the segments in (rod, segment) order, the first half and
+  // the second; each rod's list is then the first part's contacts followed
+  // by the second's, which is the order of one pass.
+  const bool split = scratch.threads.splits(segments);
+  const int half = split ? segments / 2 : segments;
+  scratch.threads.run(split, scratch, [&](int part, ContactScratch& s) {
+    std::vector<std::vector<ContactPoint>>& found = scratch.parts[part].wall;
+    if (split) found.resize(rods);
+    int index = 0;  // of the first segment of rod k in (rod, segment) order
+    const int from = part ? half : 0, to = part ? segments : half;
+    for (size_t k = 0; k < rods && index < to; ++k) {
+      RodState& r = state.rods[k];
+      if (!r.active || model.rods[k].role == RodRole::Catheter) continue;
+      const int n = std::max(0, r.activeNodes - 1);
+      std::vector<ContactPoint>& out = split ? found[k] : r.contact.wall;
+      if (split) out.clear();
+      for (int e = std::max(0, from - index); e < n && index + e < to; ++e)
+        detectSegment(model, r, e, h, margin, laws[k], coherent, s, out);
+      index += n;
+    }
+  });
+  for (size_t k = 0; k < rods; ++k) {
+    RodState& r = state.rods[k];
+    RodContacts& rc = r.contact;
+    if (split && r.active && model.rods[k].role != RodRole::Catheter) {
+      std::swap(rc.wall, scratch.parts[0].wall[k]);
+      const std::vector<ContactPoint>& second = scratch.parts[1].wall[k];
+      rc.wall.insert(rc.wall.end(), second.begin(), second.end());
+    }
+    reportContacts(rc.wall, r, laws[k], rc.wallForce);
     // The wire's own penetration: the contacts' gaps are the skinned capsule's.
     rc.wallPenetration = 0;
     for (const ContactPoint& c : rc.wall)

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "physics/contact/contact_state.h"
+#include "physics/contact/detect_parallel.h"
 #include "physics/contact/geometry.h"
 
 namespace coilsim {
@@ -18,6 +19,20 @@ struct GridSegment {
   int rod = 0, segment = 0;
   Vec3 mid = Vec3::Zero();  // midpoint, m
   double extent = 0;        // half the length + the scaled contact radius + what it sweeps, m
+};
+
+// A pair found in contact by one part of a split pair search: segment si
+// of rod ki and sj of rod kj, and their closest points (detect_rods.cpp).
+struct FoundPair {
+  int ki = 0, si = 0, kj = 0, sj = 0;
+  SegmentPair p;
+};
+
+// What one part of a detection split over threads found, joined in the
+// parts' order (detect_parallel.h).
+struct DetectionPart {
+  std::vector<std::vector<ContactPoint>> wall;  // per rod, in segment order
+  std::vector<FoundPair> pairs;                 // in the order visited
 };
 
 struct ContactScratch {
@@ -37,6 +52,10 @@ struct ContactScratch {
   std::vector<GridSegment> grid, fast;  // fast: segments paired directly, not through the grid
   std::vector<std::vector<ContactPoint>> previous;
   std::vector<double> moves;
+  // Detection split over a second thread (detect_parallel.h): the thread,
+  // and the two parts' findings.
+  DetectionThreads threads;
+  DetectionPart parts[2];
 };
 
 }  // namespace coilsim
