@@ -87,7 +87,7 @@ void accumulate(AutoDeployResult& total, AutoDeployResult&& one) {
 
 }  // namespace
 
-CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const ContactForceSource& contacts) {
+CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const WallForceCheck& contacts) {
   CandidateResult r;
   r.name = c.name();
   r.variant = c.variant;
@@ -134,7 +134,7 @@ CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const C
       chainRod = d.chainRod, catheterNodes = d.tipNode;
       setDrawnCatheterActive(d, r.state, false);
       AutoDeployResult one =
-          autoDeploy(r.model, r.state, setup.deploy, contacts ? contacts : ContactForceSource(wallContactForces));
+          autoDeploy(r.model, r.state, setup.deploy, contacts ? contacts : WallForceCheck(hasWallForces));
       setDrawnCatheterActive(d, r.state, true);  // for the picture
       if (c.coils.size() > 1) {
         const std::string label = coil.name + ": ";
@@ -164,7 +164,7 @@ CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const C
 }
 
 std::vector<CandidateResult> runCandidates(const PlanSetup& setup, const std::vector<Candidate>& candidates, int jobs,
-                                           const ContactForceSource& contacts) {
+                                           const WallForceCheck& contacts) {
   std::vector<CandidateResult> results(candidates.size());
   std::atomic<size_t> next{0};
   auto worker = [&] {

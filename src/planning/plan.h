@@ -61,11 +61,11 @@ struct CandidateResult {
 };
 
 // Deploys one candidate; never throws (errors land in `error`).
-CandidateResult runCandidate(const PlanSetup& setup, const Candidate& candidate, const ContactForceSource& contacts = {});
+CandidateResult runCandidate(const PlanSetup& setup, const Candidate& candidate, const WallForceCheck& contacts = {});
 
 // All candidates on up to `jobs` threads; results in the candidates' order.
 std::vector<CandidateResult> runCandidates(const PlanSetup& setup, const std::vector<Candidate>& candidates, int jobs,
-                                           const ContactForceSource& contacts = {});
+                                           const WallForceCheck& contacts = {});
 
 // Sensitivity variants of a coil: nominal, tip shifted by +-shift along the
 // two axes across the exit direction, exit direction tilted by +-tilt.
