@@ -23,7 +23,7 @@ namespace {
 double cpuMicroseconds() {
   timespec t{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return 1e6 * double(t.tv_sec) + 1e-3 * double(t.tv_nsec);
+  return units::sToUs(double(t.tv_sec)) + units::nsToUs(double(t.tv_nsec));
 }
 
 bool isContact(const EffectUse& u) { return u.name() == "wall_contact" || u.name() == "self_contact"; }

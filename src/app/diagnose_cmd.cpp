@@ -213,7 +213,7 @@ int runDiagnose(const std::vector<std::string>& argsIn) {
     const Diagnosis d = diagnose(sim, cmp, ModelParams::nominal(f.m), o);
     if (!d.ok) {
       std::fprintf(stderr, "coilsim diagnose: %s: %s\n", f.file.c_str(), d.message.c_str());
-      return kExitFailure;
+      return exitCodeOf(d.failure);
     }
     const std::string dir = several ? (std::filesystem::path(a.out) / ("file" + std::to_string(i + 1))).string() : a.out;
     if (several && !makeOutputDirectory("diagnose", dir)) return kExitUsage;

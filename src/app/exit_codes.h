@@ -1,6 +1,8 @@
 #pragma once
 // Process exit codes of every coilsim command, and the one place a physics
 // failure becomes one.
+#include <optional>
+
 #include "physics/failure.h"
 
 namespace coilsim::app {
@@ -14,5 +16,10 @@ inline constexpr int kExitUsage = 2;    // bad command line or bad input file
 // (front ends report it as a warning), so it maps to 1 only when a caller
 // decides it ends the run.
 inline int exitCodeOf(const Failure& f) { return f.kind == FailureKind::BadDefinition ? kExitUsage : kExitFailure; }
+
+// A command that failed (a fit, a diagnosis): as its physics cause says when
+// it has one (the Failure of the stage that could not be simulated), else a
+// failed simulation (1: the optimiser gave up, nothing succeeded).
+inline int exitCodeOf(const std::optional<Failure>& cause) { return cause ? exitCodeOf(*cause) : kExitFailure; }
 
 }  // namespace coilsim::app

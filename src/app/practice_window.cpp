@@ -35,8 +35,8 @@ class WindowScorer : public ui::RunObserver {
   void viewChanged(double t, const std::string& view) override { scorer_->viewChanged(t, view); }
   void noted(const std::string& message) override { scorer_->deviceMessage(message); }
   void beforeStep(const State& s) override { scorer_->beforeStep(s); }
-  void afterStep(const Model& m, const State& s, bool ok, const std::string& why) override {
-    scorer_->afterStep(m, s, ok, why);
+  void afterStep(const Model& m, const State& s, const StepReport& report) override {
+    scorer_->afterStep(m, s, report);
   }
   // Reset: a new session from the start.
   void restarted() override { scorer_.emplace(pc_, coil_, dep_, dt_); }

@@ -59,11 +59,11 @@ struct Outcome {
 
 std::string stepSummary(const Model& model, const State& state, long done, long steps, double seconds) {
   const StepStats& st = state.stats;
-  const double meanUs = st.steps ? 1e6 * st.totalStepSeconds / double(st.steps) : 0.0;
+  const double meanUs = st.steps ? units::sToUs(st.totalStepSeconds / double(st.steps)) : 0.0;
   const Energy e = computeEnergy(model, state);
   return "dynamic, " + std::to_string(done) + " of " + std::to_string(steps) + " steps of " +
          fmt("%.4g", units::sToMs(model.timeStep)) + " ms to t = " + fmt("%.6g", state.time) + " s in " + fmt("%.3g", seconds) +
-         " s (step mean " + fmt("%.3g", meanUs) + " us, max " + fmt("%.3g", 1e6 * st.maxStepSeconds) +
+         " s (step mean " + fmt("%.3g", meanUs) + " us, max " + fmt("%.3g", units::sToUs(st.maxStepSeconds)) +
          " us); energy " + fmt("%.4g", e.total()) + " J (kinetic " + fmt("%.3g", e.kinetic) + " J)";
 }
 

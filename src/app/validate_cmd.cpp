@@ -148,9 +148,9 @@ ordered_json stagesJson(const Comparison& cmp, const std::vector<StageComparison
     ordered_json j;
     j["name"] = m.stages[k].name;
     j["deployed_length_mm"] = r6(units::mToMm(m.stages[k].deployed));
-    j["ok"] = s.ok;
-    if (!s.ok) {
-      j["message"] = s.message;
+    j["ok"] = s.ok();
+    if (!s.ok()) {
+      j["message"] = s.message();
       out.push_back(j);
       continue;
     }
@@ -326,7 +326,7 @@ std::string stageTable(const Measurement& m, const std::vector<StageComparison>&
                        const std::vector<StageComparison>& after) {
   std::ostringstream t;
   auto cells = [&](const StageComparison& s) {
-    if (!s.ok) return std::string(" failed | | | |");
+    if (!s.ok()) return std::string(" failed | | | |");
     const StageMetrics& q = s.metrics;
     char buf[160];
     std::snprintf(buf, sizeof buf, " %.4f | %.3f +- %.3f | %.3f | %.3f |", q.stageError, q.nodeErrorMean, q.nodeErrorSd,
@@ -355,7 +355,7 @@ void writePlots(const std::string& dir, const Measurement& m, const std::vector<
   if (savePng(arc, plotErrorAlongArc(stages, names), err)) written.push_back("error_along_arc.png");
   else return warnings.push_back(err);
   for (size_t k = 0; k < stages.size(); ++k) {
-    if (!stages[k].ok) continue;
+    if (!stages[k].ok()) continue;
     const std::string name = "overlay_stage" + std::to_string(k + 1) + ".png";
     const std::string title = m.name + ", " + m.stages[k].name + ": stage error " + fmt("%.4f", stages[k].metrics.stageError);
     if (savePng((fs::path(dir) / name).string(), plotOverlay(stages[k], m.stages[k], m.gravity, m.tip.direction, title), err))
@@ -416,7 +416,8 @@ int runValidateJoint(const WorkbenchArgs& a) {
      << (a.effects.empty() ? std::string("none (the base model)") : ordered_json(a.effects).dump())
      << "; fitted jointly: " << (fit.empty() ? std::string("nothing (nominal values)") : ordered_json(fit).dump()) << ".\n\n";
   if (!fit.empty()) md << jointMarkdown(jd, a.files);
-  bool failed = !fit.empty() && !jd.ok;
+  // The first failure decides the exit code (exitCodeOf): the joint fit's, else a stage's.
+  int code = !fit.empty() && !jd.ok ? exitCodeOf(jd.failure) : kExitOk;
   for (size_t i = 0; i < ms.size(); ++i) {
     const std::vector<StageComparison> before = cmps[i]->compare(sims[i]->run(ModelParams::nominal(ms[i]), false));
     const std::vector<StageComparison> after = cmps[i]->compare(sims[i]->run(fitted[i], false));
@@ -431,7 +432,8 @@ int runValidateJoint(const WorkbenchArgs& a) {
     md << "## " << ms[i].name << " (`" << a.files[i] << "`)\n\n" << stageTable(ms[i], before, after) << "\n**"
        << adq.verdict << "**\n\n";
     text << a.files[i] << "\n" << stageTable(ms[i], before, after) << "adequacy: " << adq.verdict << "\n";
-    for (const StageComparison& s : after) failed = failed || !s.ok;
+    for (const StageComparison& s : after)
+      if (!s.ok() && code == kExitOk) code = exitCodeOf(*s.failure);
   }
   j["files"] = per;
   if (!fit.empty()) j["joint"] = jointJson(jd, a.files);
@@ -451,7 +453,7 @@ int runValidateJoint(const WorkbenchArgs& a) {
     std::printf("joint: %s\n", jd.ok ? jd.verdict.c_str() : jd.message.c_str());
   }
   std::printf("report: %s\n", (std::filesystem::path(a.out) / "report.json").string().c_str());
-  return failed ? kExitFailure : kExitOk;
+  return code;
 }
 
 }  // namespace
@@ -606,13 +608,13 @@ int runValidate(const std::vector<std::string>& args) {
   std::printf("adequacy: %s\nprediction: %s\n", adq.verdict.c_str(), pred.message.c_str());
   std::printf("report: %s\n", (std::filesystem::path(a.out) / "report.json").string().c_str());
   for (const StageComparison& s : after)
-    if (!s.ok) {
-      std::fprintf(stderr, "coilsim validate: a stage failed: %s\n", s.message.c_str());
-      return kExitFailure;
+    if (!s.ok()) {
+      std::fprintf(stderr, "coilsim validate: a stage failed: %s\n", s.message().c_str());
+      return exitCodeOf(*s.failure);
     }
   if (!r.ok) {
     std::fprintf(stderr, "coilsim validate: %s\n", stopRequested() ? stopReason() : r.message.c_str());
-    return stopRequested() ? stopExitCode() : kExitFailure;
+    return stopRequested() ? stopExitCode() : exitCodeOf(r.failure);
   }
   return kExitOk;
 }

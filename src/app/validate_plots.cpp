@@ -147,7 +147,7 @@ Canvas plotErrorAlongArc(const std::vector<validation::StageComparison>& stages,
   Painter p(width, height);
   double sMax = 1e-3, eMax = 1e-6;
   for (const auto& st : stages) {
-    if (!st.ok) continue;
+    if (!st.ok()) continue;
     for (size_t i = 0; i < st.s.size(); ++i) {
       sMax = std::max(sMax, units::mToMm(st.s[i]));
       eMax = std::max(eMax, units::mToMm((st.sim[i] - st.meas[i]).norm()));
@@ -162,9 +162,9 @@ Canvas plotErrorAlongArc(const std::vector<validation::StageComparison>& stages,
     const Colour col = kStageColours[k % std::size(kStageColours)];
     const std::string name = k < names.size() ? names[k] : "stage " + std::to_string(k + 1);
     p.line(f.right + 15, legendY + 4, f.right + 40, legendY + 4, col, 1.0);
-    p.text(f.right + 46, legendY, st.ok ? name : name + " (failed)", kBlack);
+    p.text(f.right + 46, legendY, st.ok() ? name : name + " (failed)", kBlack);
     legendY += 16;
-    if (!st.ok) continue;
+    if (!st.ok()) continue;
     for (size_t i = 1; i < st.s.size(); ++i)
       p.line(f.px(units::mToMm(st.s[i - 1])), f.py(units::mToMm((st.sim[i - 1] - st.meas[i - 1]).norm())), f.px(units::mToMm(st.s[i])),
              f.py(units::mToMm((st.sim[i] - st.meas[i]).norm())), col, 1.0);

@@ -53,9 +53,9 @@ ui::ValidationStageRow row(const Stage& st, const StageComparison& s) {
   ui::ValidationStageRow r;
   r.name = st.name;
   r.deployedMm = units::mToMm(st.deployed);
-  r.ok = s.ok;
-  r.message = s.message;
-  if (!s.ok) return r;
+  r.ok = s.ok();
+  r.message = s.message();
+  if (!s.ok()) return r;
   r.stageError = s.metrics.stageError;
   r.nodeErrorMean = s.metrics.nodeErrorMean;
   r.nodeErrorSd = s.metrics.nodeErrorSd;
@@ -73,7 +73,7 @@ ui::ValidationStageRow row(const Stage& st, const StageComparison& s) {
 // spline at the nodes' arc lengths) as a thin grey tube beside it.
 DrawData scene(const Measurement& m, const StageComparison& s) {
   DrawData d;
-  if (!s.ok || s.sim.empty()) return d;
+  if (!s.ok() || s.sim.empty()) return d;
   DrawTube coil;
   coil.name = "coil (simulated)";
   coil.radius = m.coil.wireRadius;
@@ -152,7 +152,7 @@ int runValidateWindow(const WorkbenchArgs& a, const WindowArgs& w) {
   h.errorScale = errorLegend();
   const std::vector<std::string> baseFit = a.fit.empty() ? std::vector<std::string>{youngModulusFit()} : a.fit;
   std::vector<double> beforeErrors;
-  for (const StageComparison& s : before) beforeErrors.push_back(s.ok ? s.metrics.stageError : NAN);
+  for (const StageComparison& s : before) beforeErrors.push_back(s.ok() ? s.metrics.stageError : NAN);
   h.fit = [m, so, baseFit, beforeErrors, quiet = a.quiet](const std::vector<std::string>& effects, const ui::FitProgress& progress,
                                                        const std::function<bool()>& stop) {
     ui::ValidationView out;
@@ -184,7 +184,7 @@ int runValidateWindow(const WorkbenchArgs& a, const WindowArgs& w) {
       for (size_t k = 0; k < effects.size(); ++k) line.append(k ? "," : "").append(effects[k]);
       line.append("]: stage error");
       for (size_t k = 0; k < after.size(); ++k)
-        line.append(fmt(" %.4f ->", beforeErrors[k])).append(after[k].ok ? fmt(" %.4f", after[k].metrics.stageError) : " failed");
+        line.append(fmt(" %.4f ->", beforeErrors[k])).append(after[k].ok() ? fmt(" %.4f", after[k].metrics.stageError) : " failed");
       if (!r.ok) line.append(" (fit failed: ").append(r.message).append(")");
       std::printf("%s\n", line.c_str());
       std::fflush(stdout);

@@ -32,15 +32,17 @@ inline constexpr double degPerMmToRadPerM(double t) { return t * kRadPerDeg / kM
 
 // What the panels, reports and result files show besides. Areas and
 // volumes in mm2 and mm3 (as the lengths); penetrations in micrometres,
-// forces in millinewtons (the unit clinical force papers report) and times
-// in milliseconds multiply by the exact power of ten (1e3, 1e6), and back
-// by its inverse (as mmToM).
+// forces in millinewtons (the unit clinical force papers report), times in
+// milliseconds and the timings of runs and benches in microseconds multiply
+// by the exact power of ten (1e3, 1e6), and back by its inverse (as mmToM).
 inline constexpr double m2ToMm2(double m2) { return mToMm(mToMm(m2)); }
 inline constexpr double m3ToMm3(double m3) { return mToMm(mToMm(mToMm(m3))); }
 inline constexpr double mToUm(double m) { return m * 1e6; }
 inline constexpr double nToMn(double n) { return n * 1e3; }
 inline constexpr double mnToN(double mn) { return mn * 1e-3; }
 inline constexpr double sToMs(double s) { return s * 1e3; }
+inline constexpr double sToUs(double s) { return s * 1e6; }
+inline constexpr double nsToUs(double ns) { return ns * 1e-3; }  // a clock's nanoseconds (timespec::tv_nsec)
 
 // A declared parameter (effect or rod quantity) between its edge unit and SI.
 inline constexpr double toSI(const ParamSpec& p, double edge) { return edge * p.toSI; }

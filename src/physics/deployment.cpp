@@ -380,13 +380,22 @@ void setTipOffset(const Model& model, State& state, double offset) {
     for (Pose& t : state.rods[rod].targets) t.position += change * back;
 }
 
-std::string detach(const Model& model, State& state) {
+std::optional<Failure> detach(const Model& model, State& state) {
   const Deployment& dep = *model.device;
   DeviceState& ds = state.device;
-  if (ds.detached) return "the coil is detached already";
-  if (ds.deployed < dep.coilLength - 1e-9)
-    return "the coil is not fully out of the catheter (" + std::to_string(ds.deployed * 1e3) + " of " +
-           std::to_string(dep.coilLength * 1e3) + " mm): push it out before detaching";
+  const auto refused = [](std::string why) {
+    Failure f;
+    f.kind = FailureKind::DeviceRefusal;
+    f.text = std::move(why);
+    return f;
+  };
+  if (ds.detached) return refused("the coil is detached already");
+  if (ds.deployed < dep.coilLength - 1e-9) {
+    Failure f = refused("the coil is not fully out of the catheter (" + std::to_string(ds.deployed * 1e3) + " of " +
+                        std::to_string(dep.coilLength * 1e3) + " mm): push it out before detaching");
+    f.quantity = "deployed length", f.value = ds.deployed, f.limit = dep.coilLength;
+    return f;
+  }
   RodState& chain = state.rods[dep.chainRod];
   RodState& free = state.rods[dep.freeRod];
   const int T = dep.tipNode, n = chain.activeNodes - T;  // tip node + coil nodes 1..N
@@ -414,7 +423,7 @@ std::string detach(const Model& model, State& state) {
   else chain.nodes[0] = coilNodeProps(dep, 0.5 * dep.spacing);
   ds.detached = true;
   ds.releasedAt = chain.x[T];
-  return {};
+  return std::nullopt;
 }
 
 namespace {

@@ -4,9 +4,11 @@
 // device is and how it is discretised: physics/device.h. These functions
 // act on the run's own device (Model::device, State::device); the model
 // must have one.
+#include <optional>
 #include <string>
 
 #include "physics/device.h"
+#include "physics/failure.h"
 #include "physics/model.h"
 #include "physics/state.h"
 
@@ -62,9 +64,10 @@ void setTipOffset(const Model& model, State& state, double offset);
 
 // Releases the coil from the pusher: the free rod takes the chain's coil
 // nodes (the proximal end where the tip node is), the chain keeps the tip.
-// Returns an empty string, or why it is refused (coil not fully out, done
-// already), and then changes nothing.
-std::string detach(const Model& model, State& state);
+// Returns nothing, or why it is refused (a DeviceRefusal: the coil not fully
+// out, detached already), and then changes nothing. Front ends detach
+// through command() (a pending detach that advance() carries out).
+std::optional<Failure> detach(const Model& model, State& state);
 
 // Coil arc length and mass as the state's node bookkeeping represents them
 // now (outside part plus the part still inside), for conservation checks.

@@ -158,15 +158,8 @@ StepReport attempt(const Model& model, State& state, double h, bool detect, bool
     if (state.rods[k].active) report = stepRod(model, int(k), state.rods[k], state.time, h, iterations);
   if (report.ok()) report.failure = checkHealth(model, state);
   for (size_t k = 0; k < model.effects.size() && verify && report.ok(); ++k)
-    if (model.effects[k].enabled) {
-      std::string missed = model.effects[k].effect->endStep(model, model.effects[k].values, state, h);
-      if (!missed.empty()) {
-        Failure f;
-        f.kind = FailureKind::MissedContact;
-        f.text = std::move(missed);  // the effect names the rods and segments itself
-        report.failure = std::move(f);
-      }
-    }
+    if (model.effects[k].enabled)
+      report.failure = model.effects[k].effect->endStep(model, model.effects[k].values, state, h);
   if (verify && report.ok()) retake = overstretched(state);
   return report;
 }

@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "physics/failure.h"
 #include "physics/math.h"
 #include "physics/param.h"
 
@@ -109,10 +110,14 @@ class Effect {
   virtual void beginStep(const Model&, std::span<const double>, State&, double /*h*/) const {}
   // Called after every rod has been stepped, for effects whose beginStep
   // prepared what the step's own motion can outrun (a contact reached
-  // within the step that was not in its implicit solve). A non-empty answer
-  // says what was missed, and the step is taken again in substeps, each
-  // with its own beginStep. Default: nothing missed.
-  virtual std::string endStep(const Model&, std::span<const double>, const State&, double /*h*/) const { return {}; }
+  // within the step that was not in its implicit solve). An answer is a
+  // Failure of kind MissedContact naming the rod and beam that went too
+  // deep (quantity, value and limit: the depth and the tolerance, m); the
+  // step is then taken again in substeps, each with its own beginStep
+  // (physics/dynamics.cpp). Default: nothing missed.
+  virtual std::optional<Failure> endStep(const Model&, std::span<const double>, const State&, double /*h*/) const {
+    return std::nullopt;
+  }
   // The largest fraction in (0, 1] of a proposed static Newton update of rod
   // `rod` (dx: one position change per active node) that this effect
   // accepts: contacts refuse updates that would carry one segment through

@@ -100,8 +100,8 @@ void moveDevice(const Model& model, State& state) {
   std::vector<std::string>& notes = ds.notes;
   if (m.pendingDetach) {
     m.pendingDetach = false;
-    const std::string why = detach(model, state);
-    notes.push_back(why.empty() ? "detached" : "refused: " + why);
+    const std::optional<Failure> refused = detach(model, state);
+    notes.push_back(refused ? describe(*refused) : "detached");
     m.pushRate = m.twistRate = 0;
   }
   double deployed = ds.deployed, twist = ds.twist;

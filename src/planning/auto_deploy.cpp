@@ -75,7 +75,7 @@ bool FeltTipForce::add(const Deployment& dep, const State& state, bool still, do
 }
 
 AutoDeployResult autoDeploy(const Model& model, State& state, const AutoDeployOptions& o,
-                            const ContactForceSource& contacts) {
+                            const WallForceCheck& contacts) {
   using Kind = DeviceCommand::Kind;
   AutoDeployResult r;
   const Deployment& dep = *model.device;
@@ -83,7 +83,6 @@ AutoDeployResult autoDeploy(const Model& model, State& state, const AutoDeployOp
   const double dt = model.timeStep;
   const double probe = 0.02;  // s the pusher rests to feel the resistance
   FeltTipForce feel(probe);
-  std::vector<std::vector<double>> forces;
   enum class Phase { Stroke, Feel, Twist, Pause, PullBack, Settle, After } phase = Phase::Feel;
   const auto countStep = [](AutoDeployResult::Effort& e, Phase p) {
     long* counts[] = {&e.pushing, &e.feeling, &e.twisting, &e.pausing, &e.pullingBack, &e.settling, &e.afterDetach};
@@ -149,7 +148,7 @@ AutoDeployResult autoDeploy(const Model& model, State& state, const AutoDeployOp
     r.maxKickback = std::max(r.maxKickback, catheterTip(model, state).kickback);
     r.maxWallPenetration = state.stats.maxWallPenetration;
     r.maxWallPenetrationOfRadius = state.stats.maxWallPenetrationOfRadius;
-    if (contacts && contacts(model, state, forces)) {
+    if (contacts && contacts(model, state)) {
       r.wallForcesAvailable = true;
       r.wall.add(state, dt, o.wallForceThreshold);
     }

@@ -39,10 +39,11 @@ struct AutoDeployOptions {
   double wallForceThreshold = 0.05;  // N: wall load counted as "above the safety threshold"
 };
 
-// Per-node wall (contact) force magnitudes of every rod, N, or false when
-// there are none to read (no wall contact in the scene): then wall forces
-// are reported as unavailable, never as zero.
-using ContactForceSource = std::function<bool(const Model& , const State&, std::vector<std::vector<double>>&)>;
+// Whether a run has wall forces to report (its wall load, State::stats and
+// RodContacts::wallForce, kept by the contact layer): false when the scene
+// has no wall contact, and then they are reported as unavailable, never as
+// zero.
+using WallForceCheck = std::function<bool(const Model&, const State&)>;
 
 struct AutoDeployResult {
   bool ok = true;              // false: a step was refused (blow-up) or maxTime passed
@@ -101,6 +102,6 @@ class FeltTipForce {
 // Runs the model's deployment from the state's current configuration to
 // detach (or until the operator gives up, or maxTime).
 AutoDeployResult autoDeploy(const Model& model, State& state, const AutoDeployOptions& options,
-                            const ContactForceSource& contacts = {});
+                            const WallForceCheck& contacts = {});
 
 }  // namespace coilsim::planning

@@ -1,11 +1,12 @@
 #pragma once
-// Wall forces per node as planning reads them from the contact layer.
+// Whether a run has wall forces, as planning asks the contact layer.
 #include "planning/auto_deploy.h"
 
 namespace coilsim::planning {
 
-// Reads RodContacts::wallForce of every rod (normal force from walls per
-// node, N); false when the model has no enabled "wall_contact" effect.
-bool wallContactForces(const Model& model, const State& state, std::vector<std::vector<double>>& out);
+// True when the model has an enabled "wall_contact" effect, whose per-node
+// wall forces (RodContacts::wallForce) and wall load (State::stats) the
+// step keeps; the default WallForceCheck.
+bool hasWallForces(const Model& model, const State& state);
 
 }  // namespace coilsim::planning

@@ -38,8 +38,7 @@ std::vector<LiveLine> LiveReadouts::lines(const Model& model, const State& state
   }
   // The contact layer's sustained load, kept in the State step by step (so a
   // window that reads it once a frame shows what the score sheet and plan report).
-  std::vector<std::vector<double>> forces;
-  wallAvailable_ = wallContactForces(model, state, forces);
+  wallAvailable_ = hasWallForces(model, state);
   wallNow_ = state.stats.wallLoad.now;
   wallMax_ = state.stats.wallLoad.max;
 

@@ -94,7 +94,7 @@ void accumulate(AutoDeployResult& total, AutoDeployResult&& one) {
 
 }  // namespace
 
-CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const ContactForceSource& contacts,
+CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const WallForceCheck& contacts,
                              int detectionThreads) {
   CandidateResult r;
   r.name = c.name();
@@ -143,7 +143,7 @@ CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const C
       chainRod = d.chainRod, catheterNodes = d.tipNode;
       setDrawnCatheterActive(d, r.state, false);
       AutoDeployResult one =
-          autoDeploy(r.model, r.state, setup.deploy, contacts ? contacts : ContactForceSource(wallContactForces));
+          autoDeploy(r.model, r.state, setup.deploy, contacts ? contacts : WallForceCheck(hasWallForces));
       setDrawnCatheterActive(d, r.state, true);  // for the picture
       if (c.coils.size() > 1) {
         const std::string label = coil.name + ": ";
@@ -184,7 +184,7 @@ int detectionThreadsFor(int runsAtOnce) {
 }
 
 std::vector<CandidateResult> runCandidates(const PlanSetup& setup, const std::vector<Candidate>& candidates, int jobs,
-                                           const ContactForceSource& contacts) {
+                                           const WallForceCheck& contacts) {
   std::vector<CandidateResult> results(candidates.size());
   std::atomic<size_t> next{0};
   const int n = std::max(1, std::min<int>(jobs, int(candidates.size())));

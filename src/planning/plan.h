@@ -63,7 +63,7 @@ struct CandidateResult {
 // Deploys one candidate; never throws (errors land in `error`). Contact
 // detection uses `detectionThreads` (1 or 2) threads; the results are the
 // same bit for bit (physics/contact/detect_parallel.h).
-CandidateResult runCandidate(const PlanSetup& setup, const Candidate& candidate, const ContactForceSource& contacts = {},
+CandidateResult runCandidate(const PlanSetup& setup, const Candidate& candidate, const WallForceCheck& contacts = {},
                              int detectionThreads = 1);
 
 // Threads for each run's contact detection when `runsAtOnce` runs go at
@@ -73,7 +73,7 @@ int detectionThreadsFor(int runsAtOnce);
 
 // All candidates on up to `jobs` threads; results in the candidates' order.
 std::vector<CandidateResult> runCandidates(const PlanSetup& setup, const std::vector<Candidate>& candidates, int jobs,
-                                           const ContactForceSource& contacts = {});
+                                           const WallForceCheck& contacts = {});
 
 // Sensitivity variants of a coil: nominal, tip shifted by +-shift along the
 // two axes across the exit direction, exit direction tilted by +-tilt.

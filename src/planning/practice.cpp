@@ -16,7 +16,7 @@ using nlohmann::ordered_json;
 
 namespace coilsim::planning {
 
-PracticeSession::PracticeSession(const PracticeCase& pc, const std::string& coilName, const ContactForceSource& contacts) {
+PracticeSession::PracticeSession(const PracticeCase& pc, const std::string& coilName, const WallForceCheck& contacts) {
   const io::CoilSpec* coil = nullptr;
   std::string names;
   for (const io::CoilSpec& c : pc.coils) {
@@ -66,7 +66,7 @@ bool PracticeSession::step() {
   for (const std::string& n : state_.device.notes) note(n);
   state_.device.notes.clear();
   ++steps_;
-  scorer_->afterStep(model_, state_, rep.ok(), rep.message());
+  scorer_->afterStep(model_, state_, rep);
   return rep.ok();
 }
 
@@ -103,7 +103,7 @@ SessionRecording loadSession(const std::string& path) { return parseSession(io::
 
 ScoreSheet playSession(const PracticeCase& pc, const std::string& coil, const std::vector<TimedCommand>& timeline,
                        const std::vector<std::pair<double, std::string>>& views, double end,
-                       ordered_json* recordingOut, const ContactForceSource& contacts,
+                       ordered_json* recordingOut, const WallForceCheck& contacts,
                        const std::function<void(const PracticeSession&)>& atEnd,
                        const std::function<bool(const PracticeSession&)>& keepGoing) {
   PracticeSession session(pc, coil, contacts);

@@ -32,10 +32,10 @@ namespace coilsim::planning {
 class PracticeSession {
  public:
   // Builds the model for the case's coil `coilName` (one of case.coils).
-  // Wall forces come from `contacts`, by default the contact layer's (wallContactForces).
+  // Whether there are wall forces says `contacts`, by default the contact layer (hasWallForces).
   // Throws io::InputError naming the case file if the coil is not in its set
   // or the scene cannot be compiled.
-  PracticeSession(const PracticeCase& practiceCase, const std::string& coilName, const ContactForceSource& contacts = {});
+  PracticeSession(const PracticeCase& practiceCase, const std::string& coilName, const WallForceCheck& contacts = {});
 
   // Starts a device command at the next step; returns "" or why the device refuses it
   // (a refused command is not recorded as a command; the score sheet lists it).
@@ -87,7 +87,7 @@ SessionRecording parseSession(const nlohmann::json& document, const std::string&
 ScoreSheet playSession(const PracticeCase& practiceCase, const std::string& coil,
                        const std::vector<TimedCommand>& timeline,
                        const std::vector<std::pair<double, std::string>>& views, double end,
-                       nlohmann::ordered_json* recordingOut = nullptr, const ContactForceSource& contacts = {},
+                       nlohmann::ordered_json* recordingOut = nullptr, const WallForceCheck& contacts = {},
                        const std::function<void(const PracticeSession&)>& atEnd = {},
                        const std::function<bool(const PracticeSession&)>& keepGoing = {});
 

@@ -99,9 +99,9 @@ ordered_json scoreJson(const ScoreSheet& s) {
 }
 
 SessionScorer::SessionScorer(const PracticeCase& pc, const std::string& coil, const Deployment& dep, double dt,
-                             const ContactForceSource& contacts)
+                             const WallForceCheck& contacts)
     : case_(pc),
-      contacts_(contacts ? contacts : ContactForceSource(wallContactForces)),
+      contacts_(contacts ? contacts : WallForceCheck(hasWallForces)),
       coil_(coil),
       dep_(dep),
       dt_(dt),
@@ -146,7 +146,7 @@ SacMetrics SessionScorer::measure(const Model& model, const State& state) const 
   return measureSac(sac_, sacVolume_, neck_, coilLines(model, state, dep_.chainRod, dep_.tipNode));
 }
 
-void SessionScorer::afterStep(const Model& model, const State& state, bool ok, const std::string& why) {
+void SessionScorer::afterStep(const Model& model, const State& state, const StepReport& report) {
   if (!score_.ok) return;
   const DeviceState& ds = state.device;
   if (ds.detached && !wasDetached_) {
@@ -154,15 +154,15 @@ void SessionScorer::afterStep(const Model& model, const State& state, bool ok, c
     const Vec3& tip = ds.releasedAt;
     score_.detachInSac = inSac(sac_, tip) && !measure(model, state).protruding;
   }
-  if (!ok) {
+  if (!report.ok()) {
     score_.ok = false;
-    score_.error = "step refused at t = " + std::to_string(time()) + " s: " + why;
+    score_.error = "step refused at t = " + std::to_string(time()) + " s: " + report.message();
     return;
   }
   // The force a hand feels, with the pusher at rest (FeltTipForce: the sliding tip beam spikes while pushing).
   if (!ds.detached && felt_.add(dep_, state, ds.deployed == deployedBefore_ && ds.twist == twistBefore_, dt_))
     score_.maxTipForce = std::max(score_.maxTipForce, felt_.felt);
-  if (contacts_ && contacts_(model, state, forces_)) {
+  if (contacts_ && contacts_(model, state)) {
     score_.wallForcesAvailable = true;
     wall_.add(state, dt_, case_.goal.maxWallForce);
     score_.maxWallForce = wall_.max;

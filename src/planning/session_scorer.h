@@ -71,9 +71,9 @@ bool fluoroscopic(const std::string& view);
 class SessionScorer {
  public:
   // Scores `coil` of `practiceCase` deployed by `dep` with time step `dt` (s);
-  // wall forces come from `contacts` (empty: the contact layer's wallContactForces).
+  // whether there are wall forces says `contacts` (empty: the contact layer's hasWallForces).
   SessionScorer(const PracticeCase& practiceCase, const std::string& coil, const Deployment& dep, double dt,
-                const ContactForceSource& contacts = {});
+                const WallForceCheck& contacts = {});
 
   // Inputs, at the session time `t` (steps x dt) they take effect from.
   // `recorded` is what the file gets (commandJson of the command as given).
@@ -83,10 +83,11 @@ class SessionScorer {
   // (the score sheet's device_messages).
   void deviceMessage(const std::string& message);
 
-  // Around every advance (the device moves, then the physics steps). A
-  // refused step ends the scoring (nothing later counts).
+  // Around every advance (the device moves, then the physics steps), with
+  // the step's report. A refused step ends the scoring (nothing later
+  // counts; the sheet's error names the session time and the Failure).
   void beforeStep(const State& state);
-  void afterStep(const Model& model, const State& state, bool ok, const std::string& why);
+  void afterStep(const Model& model, const State& state, const StepReport& report);
 
   // The sheet at the end (final metrics, goal check).
   ScoreSheet finish(const Model& model, const State& state) const;
@@ -103,7 +104,7 @@ class SessionScorer {
   SacMetrics measure(const Model& model, const State& state) const;
 
   const PracticeCase& case_;
-  ContactForceSource contacts_;
+  WallForceCheck contacts_;
   std::string coil_;
   Deployment dep_;
   double dt_ = 0;
@@ -117,7 +118,6 @@ class SessionScorer {
   bool wasDetached_ = false;
   double deployedBefore_ = 0, twistBefore_ = 0;
   ScoreSheet score_;
-  std::vector<std::vector<double>> forces_;
   WallForceStats wall_;
   FeltTipForce felt_;
   std::vector<nlohmann::ordered_json> recorded_;  // accepted commands as the timeline file holds them

@@ -113,9 +113,8 @@ void motionButtons(Session& session, PanelContext& ctx) {
 }  // namespace
 
 bool requestDetach(Session& session, DeviceControls& dc) {
-  const std::string why = session.wouldRefuse(make(DeviceCommand::Kind::Detach, 0));
-  if (!why.empty()) {
-    session.noteRefusal(why);
+  if (const std::optional<Failure> refused = session.wouldRefuse(make(DeviceCommand::Kind::Detach, 0))) {
+    session.noteRefusal(*refused);
     dc.confirmDetach = false;
     return false;
   }

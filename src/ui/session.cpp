@@ -17,7 +17,7 @@ Session::Session(const Model& model, const State& state, DrawDataHook hook)
 void Session::setPlaying(bool playing) {
   if (playing && !playing_) {
     loop_.reset();
-    haltMessage_.clear();
+    halt_.reset();
   }
   playing_ = playing;
 }
@@ -48,7 +48,7 @@ void Session::replace(const Model& model, const State& state, DrawDataHook hook)
   loop_ = RealTimeLoop(c);
   playing_ = false;
   steps_ = 0;
-  haltMessage_.clear();
+  halt_.reset();
   refreshDrawData();
 }
 
@@ -76,25 +76,37 @@ void Session::note(const std::string& message) {
   if (observer_) observer_->noted(message);
 }
 
-std::string Session::command(const DeviceCommand& c) {
+namespace {
+
+// What a window says for a scene without a device (physics' own refusal
+// speaks of a run; the window's user chose a scene).
+Failure noDeployment() {
+  Failure f;
+  f.kind = FailureKind::DeviceRefusal;
+  f.text = "this scene has no deployment (no coil in a catheter to drive)";
+  return f;
+}
+
+}  // namespace
+
+std::optional<Failure> Session::command(const DeviceCommand& c) {
   if (!model_.device) {
-    const std::string why = "refused: this scene has no deployment (no coil in a catheter to drive)";
-    note(why);
-    return why;
+    const Failure refused = noDeployment();
+    note(describe(refused));
+    return refused;
   }
   // The observer (a recorder) may round the command to what its file holds.
   const DeviceCommand applied = observer_ ? observer_->adjust(c) : c;
-  const std::optional<Failure> refused = coilsim::command(model_, state_, applied);
+  std::optional<Failure> refused = coilsim::command(model_, state_, applied);
   if (refused) note(describe(*refused));
   else if (observer_) observer_->accepted(deviceTime(), c, applied);
-  return refused ? describe(*refused) : std::string();
+  return refused;
 }
 
-std::string Session::wouldRefuse(const DeviceCommand& c) const {
-  if (!model_.device) return "refused: this scene has no deployment (no coil in a catheter to drive)";
+std::optional<Failure> Session::wouldRefuse(const DeviceCommand& c) const {
+  if (!model_.device) return noDeployment();
   State scratch = state_;
-  const std::optional<Failure> refused = coilsim::command(model_, scratch, observer_ ? observer_->adjust(c) : c);
-  return refused ? describe(*refused) : std::string();
+  return coilsim::command(model_, scratch, observer_ ? observer_->adjust(c) : c);
 }
 
 // What runTimeline does before each step, in the same order, so that a
@@ -126,10 +138,10 @@ bool Session::stepAndCheck() {
   const StepReport r = coilsim::advance(model_, state_);
   for (const std::string& n : state_.device.notes) note(n);
   state_.device.notes.clear();
-  if (observer_) observer_->afterStep(model_, state_, r.ok(), r.message());
+  if (observer_) observer_->afterStep(model_, state_, r);
   if (!r.ok()) {
     // step() restored the state; stepping again would fail the same way.
-    haltMessage_ = describe(*r.failure);
+    halt_ = r.failure;
     playing_ = false;
     return false;
   }
@@ -142,11 +154,7 @@ StepReport Session::stepOnce() {
   stepAndCheck();
   refreshDrawData();
   StepReport r;
-  if (steps_ == before) {
-    r.failure = Failure{};
-    r.failure->kind = FailureKind::BlowUp;
-    r.failure->text = haltMessage_;
-  }
+  if (steps_ == before) r.failure = halt_;
   return r;
 }
 
@@ -164,7 +172,7 @@ void Session::reset() {
     observer_->restarted();
     observer_->viewChanged(0.0, view_);
   }
-  haltMessage_.clear();
+  halt_.reset();
   loop_.reset();
   steps_ = 0;
   refreshDrawData();

@@ -51,9 +51,10 @@ class RunObserver {
   virtual void viewChanged(double /*t*/, const std::string& /*view*/) {}
   // A refused command or a device limit reached (the device messages' line).
   virtual void noted(const std::string& /*message*/) {}
-  // Around every advance (the device moves, then the physics steps).
+  // Around every advance (the device moves, then the physics steps); the
+  // report is the step's (a refused step holds its Failure).
   virtual void beforeStep(const State&) {}
-  virtual void afterStep(const Model&, const State&, bool /*ok*/, const std::string& /*why*/) {}
+  virtual void afterStep(const Model&, const State&, const StepReport&) {}
   // The session went back to its start (Reset); the inputs so far no longer count.
   virtual void restarted() {}
   // The window closes on this model and state (runWindow calls it).
@@ -71,7 +72,8 @@ class Session {
 
   bool playing() const { return playing_; }
   void setPlaying(bool playing);
-  // One step now (used when paused). Returns the step's report.
+  // One step now (used when paused). Returns the step's report (refused:
+  // its Failure, as haltReason() holds it).
   StepReport stepOnce();
   // `count` steps without refreshing the draw data (benchmarks; call
   // refreshDrawData after). Returns how many were refused.
@@ -94,18 +96,19 @@ class Session {
   // command starts at the first step whose start time, step index * dt, is
   // at or after its time). Call before the first step.
   void setTimeline(std::vector<TimedCommand> timeline);
-  // Starts a device command now (it acts from the next step on). Returns ""
-  // or the reason for refusing it; refusals also go to the message list.
-  // Without a deployment every command is refused.
-  std::string command(const DeviceCommand& command);
-  // Why the controller would refuse `command` now ("" if it would take it),
-  // asked of physics' command() on a copy of the state, which is dropped:
-  // nothing changes and nothing is noted (a confirmation asks only when the
-  // answer could be yes).
-  std::string wouldRefuse(const DeviceCommand& command) const;
+  // Starts a device command now (it acts from the next step on). Returns
+  // nothing, or why it is refused (a DeviceRefusal; then nothing changes);
+  // refusals also go to the message list (describe()). Without a deployment
+  // every command is refused.
+  std::optional<Failure> command(const DeviceCommand& command);
+  // Why the device would refuse `command` now (nothing if it would take
+  // it), asked of physics' command() on a copy of the state, which is
+  // dropped: nothing changes and nothing is noted (a confirmation asks only
+  // when the answer could be yes).
+  std::optional<Failure> wouldRefuse(const DeviceCommand& command) const;
   // Notes a refusal found by wouldRefuse in the message list (and tells the
   // observer), as command() notes its own.
-  void noteRefusal(const std::string& why) { note(why); }
+  void noteRefusal(const Failure& refusal) { note(describe(refusal)); }
   // Refusals and limits reached ("the coil is fully deployed"), newest last,
   // each with the simulated time; at most the last 8.
   const std::deque<std::string>& deviceMessages() const { return deviceMessages_; }
@@ -133,8 +136,10 @@ class Session {
   // Session time: steps since the start (or reset) x dt, the clock of timelines and recordings.
   double deviceTime() const { return double(deviceSteps_) * model_.timeStep; }
 
-  // Why stepping stopped (a refused step), empty while healthy.
-  const std::string& haltMessage() const { return haltMessage_; }
+  // Why stepping stopped (the refused step's Failure), nothing while healthy;
+  // haltMessage() is its describe() line, empty while healthy.
+  const std::optional<Failure>& haltReason() const { return halt_; }
+  std::string haltMessage() const { return halt_ ? describe(*halt_) : std::string(); }
   const RealTimeLoop& loop() const { return loop_; }
   RealTimeLoop& loop() { return loop_; }
   long stepsTaken() const { return steps_; }
@@ -172,7 +177,7 @@ class Session {
   bool stale_ = false;
   long steps_ = 0;
   double stopTime_ = -1;
-  std::string haltMessage_;
+  std::optional<Failure> halt_;
   std::vector<TimedCommand> timeline_;
   size_t timelineNext_ = 0;
   long deviceSteps_ = 0;  // steps since the start, the timeline's clock

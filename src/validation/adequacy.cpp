@@ -19,7 +19,9 @@ void noiseFloor(const Comparison& cmp, const std::vector<StageComparison>& stage
   std::vector<std::vector<double>> at(n);
   for (size_t k = 0; k < n; ++k) {
     const SmoothingSpline& c = cmp.spline(k);
-    perfect[k].ok = stages[k].ok && !stages[k].s.empty();
+    perfect[k].failure = stages[k].failure;
+    if (stages[k].s.empty() && !perfect[k].failure)
+      perfect[k].failure = badDefinition("stage " + m.stages[k].name, "no nodes to compare");
     for (const double s : stages[k].s) perfect[k].s.push_back(s), perfect[k].x.push_back(c.at(s * stages[k].arcScale));
     // By the chord length along the points, scaled to the spline's length: a
     // projection onto c could jump to a neighbouring loop where loops touch.
@@ -80,7 +82,7 @@ Adequacy adequacy(const Comparison& cmp, const std::vector<StageComparison>& sta
     const double perNode = s.sim.empty() ? INFINITY : sum / double(s.sim.size());
     const double floor = std::max(m0[k], 1e-30);
     q.noiseFloor = std::sqrt(floor);
-    q.reducedChi2 = s.ok ? perNode / floor : INFINITY;
+    q.reducedChi2 = s.ok() ? perNode / floor : INFINITY;
     q.critical = 1 + 3.09 * sd0[k] / floor;
     q.atNoise = q.reducedChi2 <= q.critical;
     if (!q.atNoise) a.explained = false;
@@ -120,8 +122,8 @@ PredictionCheck predictLastStage(const Comparison& cmp, const SimOptions& option
   }
   StageSimulator full(m, options);
   const std::vector<StageComparison> s = cmp.compare(full.run(f.params, false));
-  if (!s.back().ok) {
-    p.message = "the last stage could not be simulated with the earlier stages' fit: " + s.back().message;
+  if (!s.back().ok()) {
+    p.message = "the last stage could not be simulated with the earlier stages' fit: " + s.back().message();
     return p;
   }
   p.predictedError = s.back().metrics.stageError;

@@ -58,8 +58,8 @@ std::vector<StageComparison> Comparison::compare(const std::vector<StageSim>& si
   for (size_t k = 0; k < sims.size(); ++k) {
     StageComparison& c = out[k];
     c.sigma = sigma_[k];
-    if (!sims[k].ok) {
-      c.message = sims[k].message;
+    if (!sims[k].ok()) {
+      c.failure = sims[k].failure;
       continue;
     }
     const double s0 = tipOffset(splines_[k], m_);
@@ -72,7 +72,6 @@ std::vector<StageComparison> Comparison::compare(const std::vector<StageSim>& si
       c.ref.push_back(m_.tip.position + s * m_.tip.direction);
     }
     c.metrics = computeMetrics(c.sim, c.meas, c.ref);
-    c.ok = true;
   }
   return out;
 }
@@ -83,7 +82,7 @@ Eigen::VectorXd Comparison::residuals(const std::vector<StageSim>& sims) const {
   std::vector<double> out;
   const auto comps = compare(sims);
   for (size_t k = 0; k < comps.size(); ++k) {
-    if (comps[k].ok) {
+    if (comps[k].ok()) {
       expectedNodes_[k] = comps[k].sim.size();
       for (size_t i = 0; i < comps[k].sim.size(); ++i)
         for (int d = 0; d < 3; ++d) out.push_back(comps[k].sim[i][d] - comps[k].meas[i][d]);
@@ -98,7 +97,7 @@ Eigen::VectorXd Comparison::residuals(const std::vector<StageSim>& sims) const {
 Eigen::VectorXd Comparison::sigmas(const std::vector<StageSim>& sims) const {
   std::vector<double> out;
   for (size_t k = 0; k < sims.size(); ++k) {
-    const size_t nodes = sims[k].ok ? sims[k].x.size() : expectedNodes_[k];
+    const size_t nodes = sims[k].ok() ? sims[k].x.size() : expectedNodes_[k];
     out.insert(out.end(), 3 * nodes, sigma_[k]);
   }
   return Eigen::Map<Eigen::VectorXd>(out.data(), Eigen::Index(out.size()));

@@ -4,6 +4,7 @@
 // nodes' arc lengths (the measured arc length calibrated by one factor per
 // stage, see compare.cpp) and scored (metrics.h), and its residuals
 // x_sim - x_meas(s) form the least-squares vector of identification.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,13 +18,14 @@ namespace coilsim::validation {
 inline constexpr double kArcScaleRange = 0.05;
 
 struct StageComparison {
-  bool ok = false;
-  std::string message;
+  std::optional<Failure> failure;        // the stage's simulation failed (StageSim::failure): nothing compared
   StageMetrics metrics;
   std::vector<double> s;                 // (nodes) arc length, m
   std::vector<Vec3> sim, meas, ref;      // (nodes) m
   double sigma = 0;                      // noise SD per coordinate used for this stage, m
   double arcScale = 1;                   // calibration of the measured arc length (compare.cpp)
+  bool ok() const { return !failure; }
+  std::string message() const { return failure ? describe(*failure) : std::string(); }
 };
 
 class Comparison {

@@ -201,6 +201,7 @@ Diagnosis diagnose(StageSimulator& sim, const Comparison& cmp, const ModelParams
   d.baseline = identify(sim, cmp, start, fo);
   if (!d.baseline.ok) {
     d.message = "baseline fit failed: " + d.baseline.message;
+    d.failure = d.baseline.failure;
     return d;
   }
   checkPriors(d.baseline, d.implausible, d.priorVerdict);
@@ -213,6 +214,7 @@ Diagnosis diagnose(StageSimulator& sim, const Comparison& cmp, const ModelParams
     d.regularisedBaseline = identify(sim, cmp, start, fo);
     if (!d.regularisedBaseline.ok) {
       d.message = "regularised baseline fit failed: " + d.regularisedBaseline.message;
+      d.failure = d.regularisedBaseline.failure;
       return d;
     }
   }

@@ -29,6 +29,7 @@
 // the list: its split along gravity / along the coil / across, where along
 // the arc length it concentrates, how it grows with the deployed length.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -77,6 +78,7 @@ struct SelectionStep {
 struct Diagnosis {
   bool ok = false;
   std::string message;
+  std::optional<Failure> failure;  // when a simulation is why it failed: the baseline fit's FitResult::failure
   FitResult baseline;                    // free fit of the baseline parameters
   FitResult regularisedBaseline;         // the same with priors in force (the reference for ranking)
   std::vector<StageComparison> baselineStages;

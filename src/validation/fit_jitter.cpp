@@ -22,7 +22,7 @@ std::vector<double> stageJitter(StageSimulator& sim, const Comparison& cmp, cons
     }
     for (size_t k = 0; k < n; ++k) {
       const StageSim &a = runs[0][k], &b = runs[1][k], &d = runs[2][k];
-      if (!a.ok || !b.ok || !d.ok || a.x.size() != b.x.size() || d.x.size() != b.x.size()) {
+      if (!a.ok() || !b.ok() || !d.ok() || a.x.size() != b.x.size() || d.x.size() != b.x.size()) {
         failed[k] = true;
         continue;
       }

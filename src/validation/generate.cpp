@@ -34,7 +34,7 @@ Measurement generateMeasurement(const Measurement& skeleton, const ModelParams& 
   std::normal_distribution<double> noise(0.0, o.sigma);
   std::uniform_real_distribution<double> gap(o.minGap, o.maxGap);
   for (size_t k = 0; k < m.stages.size(); ++k) {
-    if (!runs[k].ok) throw std::runtime_error("stage '" + m.stages[k].name + "' failed: " + runs[k].message);
+    if (!runs[k].ok()) throw std::runtime_error("stage '" + m.stages[k].name + "' failed: " + runs[k].message());
     Stage& st = m.stages[k];
     st.pointSigma = o.sigma;
     st.centerline.clear();

@@ -175,8 +175,9 @@ FitResult identifyJoint(const std::vector<FitMember>& members, const FitOptions&
     const auto sims0 = mb.sim->run(mb.start, false);
     const Eigen::VectorXd ri = mb.cmp->residuals(sims0);
     for (const auto& s : sims0)
-      if (!s.ok) {
-        res.message = "the start model fails: " + s.message;
+      if (!s.ok()) {
+        res.message = "the start model fails: " + s.message();
+        res.failure = s.failure;
         res.residual = ri;
         return res;
       }

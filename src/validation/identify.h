@@ -21,6 +21,7 @@
 // Jacobian of the residuals at the optimum and s^2 = RSS / (m - p); a
 // parameter in a null direction of J^T J is reported as not identifiable.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,7 +66,8 @@ struct FittedValue {
 
 struct FitResult {
   bool ok = false;
-  std::string message;
+  std::string message;                // why not ok (an unknown parameter, "stopped", the optimiser...)
+  std::optional<Failure> failure;     // when a simulation is why: that stage's Failure (physics/failure.h)
   ModelParams params;                 // the fitted model (of the first file in a joint fit)
   std::vector<ModelParams> memberParams;  // (files) each file's fitted model in a joint fit
   std::vector<FittedValue> fitted;    // one per FitOptions::params

@@ -56,6 +56,7 @@ JointDiagnosis diagnoseJoint(const std::vector<JointFile>& files, const std::vec
   d.joint = identifyJoint(membersOf(files, starts), fo);
   if (!d.joint.ok) {
     d.message = "joint fit failed: " + d.joint.message;
+    d.failure = d.joint.failure;
     return d;
   }
   double rssSeparate = 0;
@@ -64,6 +65,7 @@ JointDiagnosis diagnoseJoint(const std::vector<JointFile>& files, const std::vec
     d.separate.push_back(identify(*files[i].sim, *files[i].cmp, starts[i], fo));
     if (!d.separate.back().ok) {
       d.message = "fit of file " + std::to_string(i + 1) + " alone failed: " + d.separate.back().message;
+      d.failure = d.separate.back().failure;
       return d;
     }
     rssSeparate += d.separate.back().rss;

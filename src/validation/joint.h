@@ -16,6 +16,7 @@
 // file at their setup's values and the joint fit repeated: the one that
 // removes the difference is named. A coil in air and in water separates
 // buoyancy from E, which no single static file can.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,7 @@ struct JointEffect {
 struct JointDiagnosis {
   bool ok = false;
   std::string message;
+  std::optional<Failure> failure;        // when a simulation is why it failed: that fit's FitResult::failure
   std::vector<std::string> fit;          // shared parameter names
   FitResult joint;                       // shared fit, all files
   std::vector<FitResult> separate;       // (files) each alone

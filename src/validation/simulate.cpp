@@ -53,8 +53,10 @@ StaticOptions staticOptions() {
 StaticReport solveWithEffects(const Built& b, State& s) { return solveStatic(b.model, s, staticOptions()); }
 
 // Pushes from the state's current deployed length to `target` in increments
-// of at most `step`, an equilibrium after each; halves the increment on failure.
-std::string pushStatic(const Built& b, State& s, double target, double twist, double step) {
+// of at most `step`, an equilibrium after each; halves the increment on
+// failure. Nothing, or the last static solve's failure, saying how far the
+// coil was pushed.
+std::optional<Failure> pushStatic(const Built& b, State& s, double target, double twist, double step) {
   double inc = step;
   while (s.device.deployed < target - 1e-12) {
     const double next = std::min(target, s.device.deployed + inc);
@@ -67,10 +69,13 @@ std::string pushStatic(const Built& b, State& s, double target, double twist, do
     }
     s = saved;
     inc *= 0.5;
-    if (inc < 1e-3 * step)
-      return "static equilibrium not reached while pushing to " + std::to_string(next * 1e3) + " mm: " + r.message();
+    if (inc < 1e-3 * step) {
+      Failure f = *r.failure;
+      f.text += " (pushing the coil to " + std::to_string(next * 1e3) + " mm)";
+      return f;
+    }
   }
-  return {};
+  return std::nullopt;
 }
 
 // Deployed length and twist of a push history at time t (linear between samples, held outside).
@@ -89,13 +94,16 @@ StageSim collect(const Built& b, const State& s) {
   StageSim out;
   const DeviceState& ds = s.device;
   const RodState& chain = s.rods[b.dep().chainRod];
-  out.ok = true;
   for (int i = 0; i < chain.activeNodes; ++i) {
     out.x.push_back(chain.x[i]);
     // Node i >= 1 is coil material node j = k + i - 1 at u_j = L - j h; s = l - u_j.
     const int j = ds.firstOutside + i - 1;
     out.s.push_back(i == 0 ? 0.0 : ds.deployed - (b.dep().coilLength - j * b.dep().spacing));
-    if (!chain.x[i].allFinite()) out.ok = false, out.message = "non-finite node position";
+    if (!chain.x[i].allFinite() && !out.failure) {
+      out.failure = badRod(b.model.rods[size_t(b.dep().chainRod)].name, "non-finite node position");
+      out.failure->kind = FailureKind::BlowUp;
+      out.failure->node = i;
+    }
   }
   return out;
 }
@@ -132,8 +140,11 @@ std::vector<StageSim> StageSimulator::run(const ModelParams& p, bool warmStart) 
   Built b;
   try {
     b = build(m_, p, beams_, options_.timeStep);
-  } catch (const std::exception& e) {
-    for (auto& o : out) o.message = e.what();
+  } catch (const PhysicsError& e) {
+    for (auto& o : out) o.failure = e.failure();
+    return out;
+  } catch (const std::exception& e) {  // an effect's value a parameter set cannot take (EffectUse::set)
+    for (auto& o : out) o.failure = badDefinition("the model of " + m_.name, e.what());
     return out;
   }
   // Static stages by twist, then deployed length: each continues the previous one.
@@ -170,9 +181,8 @@ std::vector<StageSim> StageSimulator::run(const ModelParams& p, bool warmStart) 
       resetDevice(b.model, s, 0.0, st.twist);
       pushing = true;
     }
-    const std::string err = pushStatic(b, s, st.deployed, st.twist, options_.pushIncrement);
-    if (!err.empty()) {
-      out[i].message = err;
+    if (std::optional<Failure> failed = pushStatic(b, s, st.deployed, st.twist, options_.pushIncrement)) {
+      out[i].failure = std::move(failed);
       pushing = false;
       continue;
     }
@@ -189,18 +199,20 @@ std::vector<StageSim> StageSimulator::run(const ModelParams& p, bool warmStart) 
     double l0, tw0;
     historyAt(st, st.pushHistory.front().time, l0, tw0);
     resetDevice(b.model, d, 0.0, tw0);
-    std::string err = pushStatic(b, d, l0, tw0, options_.pushIncrement);
+    std::optional<Failure> failed = pushStatic(b, d, l0, tw0, options_.pushIncrement);
     const double h = b.model.timeStep;
-    for (double t = st.pushHistory.front().time; err.empty() && t < st.captureTime - 0.5 * h; t += h) {
+    for (double t = st.pushHistory.front().time; !failed && t < st.captureTime - 0.5 * h; t += h) {
       double l, tw;
       historyAt(st, t + h, l, tw);
       // The file's push history drives the device (not commands): set, then advance.
       setDeployment(b.model, d, l, tw);
-      const StepReport r = advance(b.model, d);
-      if (!r.ok()) err = "dynamic push failed at t = " + std::to_string(t) + " s: " + r.message();
+      if (StepReport r = advance(b.model, d); !r.ok()) {
+        failed = std::move(r.failure);
+        failed->time = t;  // on the file's clock, as its push history reads
+      }
     }
-    if (!err.empty()) {
-      out[i].message = err;
+    if (failed) {
+      out[i].failure = std::move(failed);
       continue;
     }
     out[i] = collect(b, d);

@@ -15,10 +15,12 @@
 // starts each static stage from the equilibrium of the previous evaluation
 // (continuation in the parameters along the same equilibrium branch) instead
 // of pushing again from zero; a final report always pushes from zero.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "physics/effect.h"
+#include "physics/failure.h"
 #include "validation/measurement.h"
 
 namespace coilsim::validation {
@@ -40,11 +42,17 @@ struct SimOptions {
   double timeStep = 1e-3;       // s, dynamic stages
 };
 
+// One stage simulated, or why it could not be: the Failure physics gave (a
+// model it would not build, a static push that did not converge, naming how
+// far the coil was pushed, a dynamic step refused at the push history's
+// time, a non-finite node), never a string of its own.
 struct StageSim {
-  bool ok = false;
-  std::string message;       // why not ok
+  std::optional<Failure> failure;  // nothing: simulated
   std::vector<Vec3> x;       // (nodes) positions from the tip outward, m
   std::vector<double> s;     // (nodes) arc length from the tip, m
+  bool ok() const { return !failure; }
+  // The line a report shows: describe() of the failure, "" when simulated.
+  std::string message() const { return failure ? describe(*failure) : std::string(); }
 };
 
 class StageSimulator {

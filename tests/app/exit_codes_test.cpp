@@ -4,6 +4,8 @@
 // physics refuses is.
 #include <gtest/gtest.h>
 
+#include <optional>
+
 #include "app/exit_codes.h"
 #include "physics/failure.h"
 
@@ -19,6 +21,17 @@ TEST(ExitCodes, ABadDefinitionIsBadInputAndAFailedRunAFailedSimulation) {
     f.kind = k;
     EXPECT_EQ(exitCodeOf(f), 1) << int(k);
   }
+}
+
+// A failed fit or diagnosis exits as its physics cause says, and without
+// one (the optimiser gave up) as a failed simulation.
+TEST(ExitCodes, AFailedCommandTakesItsCausesCodeOrOne) {
+  Failure f;
+  f.kind = FailureKind::BadDefinition;
+  EXPECT_EQ(exitCodeOf(std::optional<Failure>(f)), 2);
+  f.kind = FailureKind::NotConverged;
+  EXPECT_EQ(exitCodeOf(std::optional<Failure>(f)), 1);
+  EXPECT_EQ(exitCodeOf(std::optional<Failure>()), 1);
 }
 
 }  // namespace

@@ -34,7 +34,8 @@ TEST(Units, AnglesMomentsAndRates) {
 }
 
 // The display units against their SI definitions: 1 mm2 = 1e-6 m2,
-// 1 mm3 = 1e-9 m3, 1 um = 1e-6 m, 1 mN = 1e-3 N, 1 ms = 1e-3 s.
+// 1 mm3 = 1e-9 m3, 1 um = 1e-6 m, 1 mN = 1e-3 N, 1 ms = 1e-3 s,
+// 1 us = 1e-6 s, 1 ns = 1e-9 s.
 TEST(Units, ReportUnitsAgainstTheirSiDefinitions) {
   EXPECT_DOUBLE_EQ(m2ToMm2(1e-6), 1.0);
   EXPECT_DOUBLE_EQ(m2ToMm2(2.5e-5), 25.0);
@@ -48,6 +49,12 @@ TEST(Units, ReportUnitsAgainstTheirSiDefinitions) {
   EXPECT_DOUBLE_EQ(mnToN(100.0), 0.1);
   EXPECT_DOUBLE_EQ(sToMs(1e-3), 1.0);
   EXPECT_DOUBLE_EQ(sToMs(0.005), 5.0);
+  EXPECT_DOUBLE_EQ(sToUs(1e-6), 1.0);
+  EXPECT_DOUBLE_EQ(sToUs(0.0025), 2500.0);
+  EXPECT_DOUBLE_EQ(nsToUs(1000.0), 1.0);
+  EXPECT_DOUBLE_EQ(nsToUs(999999999.0), 999999.999);
+  // A clock reading (s, ns) in microseconds: 1.5 s is 1,500,000 us however it is split.
+  EXPECT_DOUBLE_EQ(sToUs(1.0) + nsToUs(5e8), sToUs(1.5));
   // Each pair inverts: an area and a volume are lengths squared and cubed.
   EXPECT_DOUBLE_EQ(mm2ToM2(m2ToMm2(3e-6)), 3e-6);
   EXPECT_DOUBLE_EQ(m3ToMm3(mmToM(2.0) * mmToM(3.0) * mmToM(4.0)), 24.0);

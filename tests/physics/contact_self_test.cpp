@@ -131,13 +131,20 @@ TEST(SelfContactTest, EndOfStepCheckCatchesAPairCrossedWithinTheStep) {
     return state;
   };
   State deep = cross(0.1e-3);
-  const std::string missed = use.effect->endStep(model, use.values, deep, model.timeStep);
-  EXPECT_NE(missed.find("segment 2"), std::string::npos) << missed;
-  EXPECT_NE(missed.find("segment 8"), std::string::npos) << missed;
+  const std::optional<Failure> missed = use.effect->endStep(model, use.values, deep, model.timeStep);
+  ASSERT_TRUE(missed);
+  EXPECT_EQ(missed->kind, FailureKind::MissedContact);
+  // Named as the crossing was built: segment 2 (beam 2 of the rod) lies under segment 8.
+  EXPECT_EQ(missed->rod, model.rods[0].name);
+  EXPECT_EQ(missed->beam, 2);
+  EXPECT_NE(missed->message().find("beam 8"), std::string::npos) << missed->message();
+  // The depth is the construction's: 2 r less the 0.1 mm between centre lines, beyond 5 % of 2 r.
+  EXPECT_NEAR(missed->value, 2 * kRadius - 0.1e-3, 1e-9);
+  EXPECT_NEAR(missed->limit, 0.05 * 2 * kRadius, 1e-15);
   use.effect->beginStep(model, use.values, deep, model.timeStep);  // now the pair is in the step's contacts
-  EXPECT_EQ(use.effect->endStep(model, use.values, deep, model.timeStep), "");
+  EXPECT_EQ(use.effect->endStep(model, use.values, deep, model.timeStep), std::nullopt);
   State graze = cross(0.29e-3);  // 10 um deep: 3 % of 2 r
-  EXPECT_EQ(use.effect->endStep(model, use.values, graze, model.timeStep), "");
+  EXPECT_EQ(use.effect->endStep(model, use.values, graze, model.timeStep), std::nullopt);
 }
 
 TEST(SelfContactTest, SwitchedOffTheCrossingPassesThrough) {

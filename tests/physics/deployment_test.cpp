@@ -202,6 +202,30 @@ TEST(DeploymentTest, InvalidCommandsAreRefusedWithAReasonAndChangeNothing) {
   EXPECT_NE(coilsim::test::refusal(command(d.model, d.state, {K::Twist, 1.0, 0.1})), "") << "twist after detach";
 }
 
+
+// detach() itself (what a pending detach runs) refuses as command() does: a
+// DeviceRefusal with the deployed length against the coil's, and nothing
+// changes; once detached, a second detach is refused too. Reference: the
+// lengths the benches were built with.
+TEST(DeploymentTest, DetachRefusesACoilNotFullyOutAndASecondDetach) {
+  Bench b = makeBench(false, 20.0, 0.01);
+  const State before = b.state;
+  const std::optional<Failure> early = detach(b.model, b.state);
+  ASSERT_TRUE(early);
+  EXPECT_EQ(early->kind, FailureKind::DeviceRefusal);
+  EXPECT_DOUBLE_EQ(early->value, 0.01);
+  EXPECT_DOUBLE_EQ(early->limit, kLength);
+  EXPECT_EQ(describe(*early).rfind("refused: ", 0), 0u) << describe(*early);
+  EXPECT_FALSE(b.state.device.detached);
+  EXPECT_EQ(b.state.rods[size_t(b.dep.freeRod)].active, before.rods[size_t(b.dep.freeRod)].active);
+  EXPECT_EQ(b.state.rods[size_t(b.dep.chainRod)].activeNodes, before.rods[size_t(b.dep.chainRod)].activeNodes);
+  Bench d = makeBench(false, 20.0, kLength);
+  ASSERT_EQ(detach(d.model, d.state), std::nullopt);
+  EXPECT_TRUE(d.state.device.detached);
+  const std::optional<Failure> again = detach(d.model, d.state);
+  ASSERT_TRUE(again);
+  EXPECT_EQ(again->kind, FailureKind::DeviceRefusal);
+}
 // The coil's RodSpec is sampled by compileModel: a rest shape that cannot be
 // built (a polyline of one point) is refused naming the deployment.
 TEST(DeploymentTest, ACoilRestShapeThatCannotBeBuiltNamesTheDeployment) {

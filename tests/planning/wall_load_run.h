@@ -36,7 +36,7 @@ inline const WallLoadRun& wallLoadRun() {
     AutoDeployOptions o;
     o.pushSpeed = 20e-3;  // the case's fastest push, to load the wall within a short test
     o.settle = 0.1;
-    r.plan = autoDeploy(r.model, r.planState, o, wallContactForces);
+    r.plan = autoDeploy(r.model, r.planState, o, hasWallForces);
     return r;
   }();
   return run;

@@ -10,6 +10,7 @@
 #include "ui/device_input.h"
 #include "ui/session.h"
 #include "support/helix_deployment.h"
+#include "support/refusal.h"
 
 namespace coilsim::ui {
 namespace {
@@ -93,10 +94,12 @@ TEST(SessionDeployment, RefusedCommandsSayWhy) {
   const Scene sc = makeScene();
   Model noDevice = sc.model;
   noDevice.device.reset();
-  EXPECT_NE(Session(noDevice, sc.start).command(cmd(DeviceCommand::Kind::Push, 0.01)).find("no deployment"),
-            std::string::npos);
+  const std::optional<Failure> none = Session(noDevice, sc.start).command(cmd(DeviceCommand::Kind::Push, 0.01));
+  ASSERT_TRUE(none);
+  EXPECT_EQ(none->kind, FailureKind::DeviceRefusal);
+  EXPECT_NE(describe(*none).find("no deployment"), std::string::npos) << describe(*none);
   Session s(sc.model, sc.start);
-  const std::string why = s.command(cmd(DeviceCommand::Kind::Detach, 0));
+  const std::string why = coilsim::test::refusal(s.command(cmd(DeviceCommand::Kind::Detach, 0)));
   EXPECT_NE(why.find("not fully out"), std::string::npos) << why;
   EXPECT_TRUE(anyMessageHas(s, "not fully out"));
   // Nothing moved: the refusal changes nothing.
@@ -108,14 +111,14 @@ TEST(SessionDeployment, RefusedCommandsSayWhy) {
 TEST(SessionDeployment, PushedToTheEndThenDetached) {
   const Scene sc = makeScene(38.0);
   Session s(sc.model, sc.start);
-  EXPECT_EQ(s.command(cmd(DeviceCommand::Kind::Push, 0.05)), "");
+  EXPECT_EQ(coilsim::test::refusal(s.command(cmd(DeviceCommand::Kind::Push, 0.05))), "");
   for (int i = 0; i < 60 && !s.deviceMessages().size(); ++i) ASSERT_TRUE(s.stepOnce().ok());
   EXPECT_TRUE(anyMessageHas(s, "fully deployed"));
   EXPECT_EQ(s.deploymentState().deployed, sc.dep.coilLength);
-  EXPECT_EQ(s.command(cmd(DeviceCommand::Kind::Detach, 0)), "");
+  EXPECT_EQ(coilsim::test::refusal(s.command(cmd(DeviceCommand::Kind::Detach, 0))), "");
   ASSERT_TRUE(s.stepOnce().ok());
   EXPECT_TRUE(s.deploymentState().detached);
-  EXPECT_NE(s.command(cmd(DeviceCommand::Kind::Push, 0.01)).find("detached"), std::string::npos);
+  EXPECT_NE(coilsim::test::refusal(s.command(cmd(DeviceCommand::Kind::Push, 0.01))).find("detached"), std::string::npos);
 }
 
 // Held keys and gamepad levers: the coil moves at lever x panel speed while

@@ -55,7 +55,7 @@ struct Log : RunObserver {
     ++before;
     if (view != "3d") ++fluoroSteps;
   }
-  void afterStep(const Model&, const State&, bool, const std::string&) override { ++after; }
+  void afterStep(const Model&, const State&, const StepReport&) override { ++after; }
   void restarted() override { *this = Log(); restarts = 1; }
 };
 

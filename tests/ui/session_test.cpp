@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
+#include <vector>
 
 #include "scenes.h"
 
@@ -52,6 +54,31 @@ TEST(Session, BlowUpHaltsAndKeepsTheLastGoodPicture) {
   // step() restored the state, so the picture is the last good one.
   for (const Vec3& p : s.drawData().tubes[0].centre) EXPECT_TRUE(p.allFinite());
   EXPECT_EQ(s.drawData().tubes[0].centre, before.tubes[0].centre);
+}
+
+// The observer is handed the refused step's report itself: the Failure that
+// stepOnce returns and the halt holds (a blow-up, by the load's
+// construction), not a line to parse.
+TEST(Session, TheObserverGetsTheRefusedStepsFailure) {
+  Model model = testing::straightRodModel();
+  model.rods[0].loads.push_back({20, Vec3(0, 0, 1e9), Vec3::Zero()});
+  model.timeStep = 0.05;
+  struct Reports : RunObserver {
+    std::vector<StepReport> seen;
+    void afterStep(const Model&, const State&, const StepReport& r) override { seen.push_back(r); }
+  };
+  auto reports = std::make_shared<Reports>();
+  Session s(model, makeState(model));
+  s.setObserver(reports);
+  const StepReport r = s.stepOnce();
+  ASSERT_EQ(reports->seen.size(), 1u);
+  ASSERT_FALSE(reports->seen[0].ok());
+  EXPECT_EQ(reports->seen[0].failure->kind, FailureKind::BlowUp);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.message(), reports->seen[0].message());
+  ASSERT_TRUE(s.haltReason());
+  EXPECT_EQ(s.haltMessage(), describe(*reports->seen[0].failure));
+  EXPECT_EQ(s.haltReason()->rod, model.rods[0].name);
 }
 
 TEST(Session, AdvanceOnlyWhilePlaying) {

@@ -32,11 +32,10 @@ TEST(Comparison, TipIsFoundAtTheStartNotOnALoopPassingOverIt) {
   st.centerline.front() = Vec3(-30e-6, 0, 0);
   m.stages.push_back(st);
   StageSim sim;
-  sim.ok = true;
   for (double s = 0; s <= length + 1e-9; s += 1e-3) sim.x.push_back(loop(s)), sim.s.push_back(s);
   const Comparison cmp(m);
   const StageComparison c = cmp.compare({sim}).front();
-  ASSERT_TRUE(c.ok) << c.message;
+  ASSERT_TRUE(c.ok()) << c.message();
   EXPECT_NEAR(c.arcScale, 1.0, 2e-3);
   double worst = 0;
   for (size_t i = 0; i < c.sim.size(); ++i) worst = std::max(worst, (c.sim[i] - c.meas[i]).norm());

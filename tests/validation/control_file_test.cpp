@@ -27,7 +27,7 @@ TEST(ControlFile, BaseModelWithEFittedIsWithinFivePercent) {
   const auto stages = cmp.compare(sim.run(f.params, false));
   ASSERT_EQ(stages.size(), 3u);
   for (size_t k = 0; k < stages.size(); ++k) {
-    ASSERT_TRUE(stages[k].ok) << stages[k].message;
+    ASSERT_TRUE(stages[k].ok()) << stages[k].message();
     EXPECT_LT(stages[k].metrics.stageError, 0.05) << m.stages[k].name;
     std::printf("%s: stage error %.4f\n", m.stages[k].name.c_str(), stages[k].metrics.stageError);
   }

@@ -57,7 +57,7 @@ TEST(FitJitter, SmoothStaticStagesStayWithinTheSecondOrderBound) {
   const std::vector<StageSim> a = sim.run(soft, false), b = sim.run(stiff, false);
   ASSERT_EQ(j.size(), m.stages.size());
   for (size_t k = 0; k < j.size(); ++k) {
-    ASSERT_TRUE(a[k].ok && b[k].ok);
+    ASSERT_TRUE(a[k].ok() && b[k].ok()) << a[k].message() << b[k].message();
     double move = 0;
     for (size_t i = 0; i < a[k].x.size(); ++i) move = std::max(move, (a[k].x[i] - b[k].x[i]).norm());
     const double bound = 2 * o.step * o.step * 2 * move;

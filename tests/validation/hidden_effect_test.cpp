@@ -312,7 +312,7 @@ TEST(HiddenEffect, SelfContactStacksTheLoops) {
   const std::vector<StageSim> r = sim.run(p, false);
   int pairsBelowPitch = 0;
   for (const StageSim& st : r) {
-    ASSERT_TRUE(st.ok) << st.message;
+    ASSERT_TRUE(st.ok()) << st.message();
     for (size_t i = 0; i + 1 < st.x.size(); ++i)
       for (size_t j = i + 2; j + 1 < st.x.size(); ++j) {
         const SegmentPair c = closestSegmentSegment(st.x[i], st.x[i + 1], st.x[j], st.x[j + 1]);

@@ -46,7 +46,6 @@ std::vector<double> trueModelErrors(const std::string& name, const Comparison& c
   std::vector<StageSim> sims;
   for (const refrod::StageResult& r : truth) {
     StageSim s;
-    s.ok = true;
     s.x = r.nodesM;
     s.s = r.nodeS;
     sims.push_back(s);

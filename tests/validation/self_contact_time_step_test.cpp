@@ -57,9 +57,9 @@ double halvingChange(const Measurement& m, const ModelParams& p, double h) {
     o.timeStep = step;
     StageSimulator sim(m, o);
     r.push_back(sim.run(p, false).front());
-    EXPECT_TRUE(r.back().ok) << r.back().message;
+    EXPECT_TRUE(r.back().ok()) << r.back().message();
   }
-  if (!r[0].ok || !r[1].ok || r[0].x.size() != r[1].x.size()) return INFINITY;
+  if (!r[0].ok() || !r[1].ok() || r[0].x.size() != r[1].x.size()) return INFINITY;
   double s = 0;
   for (size_t i = 0; i < r[0].x.size(); ++i) s += (r[0].x[i] - r[1].x[i]).squaredNorm();
   return std::sqrt(s / double(r[0].x.size()));

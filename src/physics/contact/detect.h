@@ -3,9 +3,11 @@
 // (physics/contact/contact_state.h), carries friction memory over from the
 // last step and reports the normal force per node. The response is in
 // response.h; the effects in physics/effects/*_contact.cpp tie them together.
+#include <optional>
 #include <string>
 
 #include "physics/contact/response.h"
+#include "physics/failure.h"
 #include "physics/model.h"
 #include "physics/state.h"
 
@@ -74,13 +76,15 @@ void detectRodContacts(const Model& model, State& state, double h, bool sameRod,
 // velocity predicted nothing; see docs/contact.md.)
 inline constexpr double kMissedContact = 0.05;
 
-// After a step: why a segment pair went deeper than kMissedContact into
-// another segment without having been in the step's contacts (sameRod: self
-// contacts, else between rods), or empty if none did. The step is then taken
-// again in substeps (Effect::endStep), each with its own detection. Costs a
-// pass over the contact lists, or a grid scan when some node moved more than
+// After a step: the deepest segment pair that went deeper than
+// kMissedContact into another segment without having been in the step's
+// contacts (sameRod: self contacts, else between rods), as a MissedContact
+// Failure naming the rod and beam (segment) and the other, with the depth
+// and that tolerance (m); nothing if none did. The step is then taken again
+// in substeps (Effect::endStep), each with its own detection. Costs a pass
+// over the contact lists, or a grid scan when some node moved more than
 // about margin / 2 in the step.
-std::string checkRodContacts(const Model& model, const State& state, bool sameRod, double margin,
+std::optional<Failure> checkRodContacts(const Model& model, const State& state, bool sameRod, double margin,
                              double radiusScale = 1);
 
 // For a static Newton update dx (one position change per active node of rod
@@ -94,8 +98,10 @@ std::string checkRodContacts(const Model& model, const State& state, bool sameRo
 // Pairs count as touching at radiusScale (r1 + r2) (ContactLaw); none when it is 0.
 double safeStaticFraction(const State& state, int rod, std::span<const Vec3> dx, bool sameRod, double radiusScale = 1);
 
-// After a step: why a segment went deeper than kMissedContact of its radius
-// into a wall beyond what the step's contact planes allowed, or empty. A
+// After a step: the segment that went deepest beyond what the step's
+// contact planes allowed, by more than kMissedContact of its radius, into a
+// wall, as a MissedContact Failure naming the rod, beam (segment) and
+// obstacle, with that excess depth and the tolerance (m); nothing if none. A
 // plane is the wall's tangent at detection; a node sliding fast along a
 // curved wall leaves it (1 mm along a 7 mm sphere is 0.14 mm deep, and a
 // frictionless coil tip skating at 1 m/s does that within one step). A
@@ -106,6 +112,6 @@ double safeStaticFraction(const State& state, int rod, std::span<const Vec3> dx,
 // `margin`) are queried: a node at rest against a wall, listed but not
 // closing, that a jolt moves in within the step (up to the margin deep) is
 // caught too.
-std::string checkWallContacts(const Model& model, const State& state, double margin);
+std::optional<Failure> checkWallContacts(const Model& model, const State& state, double margin);
 
 }  // namespace coilsim

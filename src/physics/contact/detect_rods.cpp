@@ -312,7 +312,8 @@ const ContactPoint* listed(const State& state, bool sameRod, int k, int si, int 
 
 }  // namespace
 
-std::string checkRodContacts(const Model& model, const State& state, bool sameRod, double margin, double radiusScale) {
+std::optional<Failure> checkRodContacts(const Model& model, const State& state, bool sameRod, double margin,
+                                        double radiusScale) {
   // A pair left out at the start was more than `margin` apart: it can only
   // have gone deeper than the tolerance if its two segments together moved
   // more than margin + tolerance (the distance between two segments changes
@@ -323,9 +324,9 @@ std::string checkRodContacts(const Model& model, const State& state, bool sameRo
     for (int i = 0; i < r.activeNodes; ++i) moved = std::max(moved, (r.x[i] - r.work.x0[i]).norm());
     for (int i = 0; i < r.activeNodes; ++i) smallest = std::min(smallest, r.nodes[i].radius);
   }
-  if (!(moved > 0)) return {};
+  if (!(moved > 0)) return std::nullopt;
   const bool scan = 2 * moved > margin + 2 * kMissedContact * radiusScale * smallest;
-  std::string missed;
+  std::optional<Failure> missed;
   double deepest = 0;
   const auto check = [&](int, int ki, int si, int kj, int sj) {
     const RodState &ri = state.rods[ki], &rj = state.rods[kj];
@@ -338,9 +339,13 @@ std::string checkRodContacts(const Model& model, const State& state, bool sameRo
     const ContactPoint* c = listed(state, sameRod, ki, si, kj, sj);
     if (c && (c->gap < 0 || c->closing[0])) return;  // in the step's implicit solve: the penalty's business
     deepest = depth;
-    missed = "rod '" + model.rods[ki].name + "' segment " + std::to_string(si) + " went " +
-             std::to_string(int(std::lround(depth * 1e6))) + " um into rod '" + model.rods[kj].name + "' segment " +
-             std::to_string(sj) + " within the step, outside its contacts";
+    missed = badRod(model.rods[ki].name, "went " + std::to_string(int(std::lround(depth * 1e6))) + " um into rod '" +
+                                             model.rods[kj].name + "' beam " + std::to_string(sj) +
+                                             " within the step, outside its contacts");
+    missed->kind = FailureKind::MissedContact;
+    missed->beam = si;
+    missed->quantity = "depth";
+    missed->value = depth, missed->limit = kMissedContact * touch;
   };
   if (scan) {
     forEachNearPair(model, state, sameRod, 0.0, 0.0, radiusScale, check);

@@ -328,11 +328,11 @@ void detectWallContacts(const Model& model, State& state, double h, double margi
   }
 }
 
-std::string checkWallContacts(const Model& model, const State& state, double margin) {
+std::optional<Failure> checkWallContacts(const Model& model, const State& state, double margin) {
   ContactScratch& scratch = state.contactScratch;
   const std::vector<int>& candidates = scratch.candidates;
   const std::vector<SegmentTriangle>& hits = scratch.hits;
-  std::string missed;
+  std::optional<Failure> missed;
   double worst = 0;
   for (size_t k = 0; k < state.rods.size(); ++k) {
     const RodState& r = state.rods[k];
@@ -378,10 +378,14 @@ std::string checkWallContacts(const Model& model, const State& state, double mar
         const double allowed = (1 - n.hit.s) * known[0] + n.hit.s * known[1];
         if (depth - allowed <= tolerance || depth - allowed <= worst) continue;
         worst = depth - allowed;
-        missed = "rod '" + model.rods[k].name + "' segment " + std::to_string(e) + " went " +
-                 std::to_string(int(std::lround(depth * 1e6))) + " um into obstacle '" + model.obstacles[o].name +
-                 "' within the step, " + std::to_string(int(std::lround(worst * 1e6))) +
-                 " um deeper than its contact planes allowed";
+        missed = badRod(model.rods[k].name, "went " + std::to_string(int(std::lround(depth * 1e6))) +
+                                                " um into obstacle '" + model.obstacles[o].name + "' within the step, " +
+                                                std::to_string(int(std::lround(worst * 1e6))) +
+                                                " um deeper than its contact planes allowed");
+        missed->kind = FailureKind::MissedContact;
+        missed->beam = e;
+        missed->quantity = "depth beyond the contact planes";
+        missed->value = worst, missed->limit = tolerance;
       }
     }
   }

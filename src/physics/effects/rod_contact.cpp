@@ -44,7 +44,8 @@ class RodContact final : public Effect {
   void beginStep(const Model& model, std::span<const double> p, State& state, double h) const override {
     detectRodContacts(model, state, h, false, p[kMargin], coilLaw(p), catheterLaw(p));
   }
-  std::string endStep(const Model& model, std::span<const double> p, const State& state, double) const override {
+  std::optional<Failure> endStep(const Model& model, std::span<const double> p, const State& state,
+                                 double) const override {
     return checkRodContacts(model, state, false, p[kMargin]);
   }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {

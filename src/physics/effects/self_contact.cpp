@@ -43,7 +43,8 @@ class SelfContact final : public Effect {
   // A loop snapping onto another within one step, from a start where the
   // pair was beyond the margin and not closing, is outside the step's
   // implicit solve: the step is retaken in substeps (as for rod_contact).
-  std::string endStep(const Model& model, std::span<const double> p, const State& state, double) const override {
+  std::optional<Failure> endStep(const Model& model, std::span<const double> p, const State& state,
+                                 double) const override {
     return checkRodContacts(model, state, true, p[kMargin], p[kRadiusScale]);
   }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {

@@ -48,7 +48,8 @@ class WallContact final : public Effect {
   }
   // A node sliding fast along a curved wall leaves the tangent plane its
   // step was solved with: the step is retaken in substeps (detect.h).
-  std::string endStep(const Model& model, std::span<const double> p, const State& state, double) const override {
+  std::optional<Failure> endStep(const Model& model, std::span<const double> p, const State& state,
+                                 double) const override {
     return checkWallContacts(model, state, p[kMargin]);
   }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
