@@ -60,8 +60,8 @@ int practiseInWindow(const planning::PracticeCase&, std::string, const std::stri
 }
 
 int runValidateWindow(const WorkbenchArgs&, const WindowArgs&) {
-  std::fprintf(stderr, "coilsim validate: this build has no graphics (--window and --screenshot need them)\n");
-  return kExitFailure;
+  std::fprintf(stderr, "coilsim validate: no panel (--window, --screenshot): %s\n", kNoGraphics.c_str());
+  return kExitUsage;
 }
 
 }  // namespace coilsim::app

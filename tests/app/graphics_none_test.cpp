@@ -43,4 +43,18 @@ TEST(Cli, CaseEditAndPracticeWindowsWithoutUiAreUsageErrors) {
   EXPECT_FALSE(fs::exists(dir / "p.png"));
 }
 
+// The validation panel likewise (validate_panel_test.cpp draws it in a build
+// with the ui layer).
+TEST(Cli, ValidatePanelWithoutUiIsAUsageError) {
+  const fs::path dir = scratch("no_ui_validate");
+  const std::string example = kSource + "/examples/measurements/soft-catheter-helix.json";
+  for (const std::vector<std::string>& args : {std::vector<std::string>{"validate", example, "--window"},
+                                               {"validate", example, "--screenshot", (dir / "v.png").string()}}) {
+    const Exec r = coilsim(args, dir);
+    EXPECT_EQ(r.code, 2) << args.back();
+    EXPECT_CONTAINS(r.err, "no ui layer");
+  }
+  EXPECT_FALSE(fs::exists(dir / "v.png"));
+}
+
 }  // namespace
