@@ -174,10 +174,14 @@ TEST(PlanCommand, BadInputExitsTwoNamingTheProblem) {
   EXPECT_EQ(run("plan --out /tmp/x", &log), 2);
   EXPECT_EQ(run("practice " + kSource + "/scenes/cases/sphere-7mm-wide-neck.json --out /tmp/x.json", &log), 2);
   // An unwritable session or score file is refused before the session (a
-  // window would otherwise lose a whole practice to a typo at its end).
+  // window would otherwise lose a whole practice to a typo at its end); a
+  // build without graphics checks it on a scripted session.
+  const std::string session = haveUi() ? " --window "
+                                       : " --coil finishing-2x10 --input " + kSource + "/timelines/practice-finishing-3x40.json ";
   for (const char* opt : {"--record", "--out"}) {
-    EXPECT_EQ(run("practice " + kSource + "/scenes/cases/sphere-7mm-wide-neck.json --window " + std::string(opt) +
-                      " /no-such-dir/s.json",
+    const std::string other = std::string(opt) == "--out" ? "" : " --out " + (scratch("coilsim-practice-out") / "s.json").string();
+    EXPECT_EQ(run("practice " + kSource + "/scenes/cases/sphere-7mm-wide-neck.json" + session + std::string(opt) +
+                      " /no-such-dir/s.json" + (haveUi() ? "" : other),
                   &log),
               2)
         << opt;
