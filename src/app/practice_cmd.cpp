@@ -29,10 +29,10 @@ namespace {
 int usage(const std::string& message) {
   std::fprintf(stderr,
                "coilsim practice: %s\n"
-               "usage: coilsim practice CASE --coil NAME --input TIMELINE [--view 3d|xray|biplane] [--views T:VIEW,...]\n"
+               "usage: coilsim practice CASE --coil NAME[+NAME...] --input TIMELINE [--view 3d|xray|biplane] [--views T:VIEW,...]\n"
                "                        [--duration S] [--record SESSION] [--screenshot PNG] [--size WxH] --out SCORE\n"
                "       coilsim practice CASE --replay SESSION [--screenshot PNG] [--size WxH] --out SCORE\n"
-               "       coilsim practice CASE --window [--coil NAME] [--view 3d|xray|biplane] [--record SESSION]\n"
+               "       coilsim practice CASE --window [--coil NAME[+NAME...]] [--view 3d|xray|biplane] [--record SESSION]\n"
                "                        [--out SCORE] [--input TIMELINE] [--views T:VIEW,...] [--duration S]\n"
                "                        [--screenshot PNG] [--size WxH]\n"
                "(docs/planning.md)\n",
@@ -66,6 +66,14 @@ bool parseViews(const std::string& text, std::vector<std::pair<double, std::stri
   return true;
 }
 
+// "a+b+c" -> a, b, c (the coils of a session in order).
+std::vector<std::string> coilNames(const std::string& text) {
+  const planning::SessionCoils coils = planning::parseCoilSequence(text);
+  std::vector<std::string> names{coils.first};
+  for (const planning::NextCoil& c : coils.next) names.push_back(c.coil);
+  return names;
+}
+
 }  // namespace
 
 int runPractice(const std::vector<std::string>& args) {
@@ -84,7 +92,9 @@ int runPractice(const std::vector<std::string>& args) {
     };
     std::string v;
     if (a == "--coil") {
-      if (!value(coil)) return usage("--coil needs a coil name of the case's set");
+      if (!value(coil)) return usage("--coil needs a coil name of the case's set, or several joined by +");
+      for (const std::string& name : coilNames(coil))
+        if (name.empty()) return usage("--coil needs coil names joined by +, got \"" + coil + "\"");
     } else if (a == "--input") {
       if (!value(input)) return usage("--input needs a timeline file (coilsim-timeline/1)");
     } else if (a == "--window") {
@@ -145,6 +155,7 @@ int runPractice(const std::vector<std::string>& args) {
   try {
     const planning::PracticeCase pc = planning::loadCase(casePath);
     if (window) {
+      if (!coil.empty()) planning::checkCoils(pc, planning::parseCoilSequence(coil));
       // By hand (or scripted, --input and --views as if typed), recorded and scored on close.
       const std::vector<TimedCommand> script = input.empty() ? std::vector<TimedCommand>() : io::loadTimeline(input);
       auto outputs = std::make_shared<WindowOutputs>();
@@ -174,20 +185,27 @@ int runPractice(const std::vector<std::string>& args) {
                             fs::path(s.caseLabel).filename() == fs::path(casePath).filename();
       if (!sameCase)
         throw io::InputError(replay + ": /case: the session was recorded on \"" + s.caseLabel + "\", not on " + casePath);
-      bool known = false;
-      for (const io::CoilSpec& c : pc.coils) known = known || c.name == s.coil;
-      if (!known) throw io::InputError(replay + ": /coil: the case " + casePath + " has no coil \"" + s.coil + "\"");
+      auto known = [&](const std::string& name) {
+        return std::any_of(pc.coils.begin(), pc.coils.end(), [&](const io::CoilSpec& c) { return c.name == name; });
+      };
+      if (!known(s.coil)) throw io::InputError(replay + ": /coil: the case " + casePath + " has no coil \"" + s.coil + "\"");
+      for (size_t k = 0; k < s.nextCoils.size(); ++k)
+        if (!known(s.nextCoils[k].coil))
+          throw io::InputError(replay + ": /next_coils/" + std::to_string(k) + "/coil: the case " + casePath +
+                               " has no coil \"" + s.nextCoils[k].coil + "\"");
       progress.emplace("practice " + casePath, s.end, "s simulated");
-      score = planning::playSession(pc, s.coil, s.timeline, s.views, s.end, nullptr, {}, picture, keepGoing);
+      score = planning::playSession(pc, planning::SessionCoils(s.coil, s.nextCoils), s.timeline, s.views, s.end, nullptr,
+                                    {}, picture, keepGoing);
     } else {
-      if (coil.empty()) coil = pc.coils.front().name;
+      const planning::SessionCoils coils = planning::parseCoilSequence(coil.empty() ? pc.coils.front().name : coil);
+      planning::checkCoils(pc, coils);
       const std::vector<TimedCommand> timeline = io::loadTimeline(input);
       // Without --duration: one second after the last command.
       if (duration == 0) duration = std::min(3600.0, (timeline.empty() ? 0.0 : timeline.back().time) + 1.0);
       if (view != "3d") views.insert(views.begin(), {0.0, view});
       nlohmann::ordered_json recording;
       progress.emplace("practice " + casePath, duration, "s simulated");
-      score = planning::playSession(pc, coil, timeline, views, duration, &recording, {}, picture, keepGoing);
+      score = planning::playSession(pc, coils, timeline, views, duration, &recording, {}, picture, keepGoing);
       if (!record.empty()) io::writeFileAtomic(record, io::formatJson(recording));
     }
     if (progress) progress->finish();

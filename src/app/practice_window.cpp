@@ -21,13 +21,18 @@ namespace {
 // Records every input of a window session and keeps its score from the
 // window's own steps (planning::SessionScorer, the hooks PracticeSession
 // calls); writes the session and the score sheet when the window closes.
+// It also holds the session's coils (planning::CoilSequence): the next
+// coil of a scripted sequence goes in once the running one has detached,
+// exactly where a headless session of the same inputs changes coils.
 class WindowScorer : public ui::RunObserver {
  public:
-  WindowScorer(const planning::PracticeCase& pc, const std::string& coil, const Deployment& dep, double dt,
+  WindowScorer(const planning::PracticeCase& pc, const planning::SessionCoils& coils, ui::DrawDataHook draw,
                std::shared_ptr<WindowOutputs> outputs)
-      : pc_(pc), coil_(coil), dep_(dep), dt_(dt), outputs_(std::move(outputs)) {
+      : pc_(pc), coils_(coils), draw_(std::move(draw)), outputs_(std::move(outputs)) {
     restarted();
   }
+  const planning::CoilSequence& sequence() const { return *sequence_; }
+
   DeviceCommand adjust(const DeviceCommand& given) override { return planning::asRecorded(given); }
   void accepted(double t, const DeviceCommand& given, const DeviceCommand& applied) override {
     scorer_->commandAccepted(t, planning::commandJson({t, given}), applied);
@@ -38,15 +43,39 @@ class WindowScorer : public ui::RunObserver {
   void afterStep(const Model& m, const State& s, const StepReport& report) override {
     scorer_->afterStep(m, s, report);
   }
-  // Reset: a new session from the start.
-  void restarted() override { scorer_.emplace(pc_, coil_, dep_, dt_); }
+  std::optional<ui::Continuation> continuation(const Model&, const State& s) override {
+    if (queued_ >= coils_.next.size() || !s.device.detached) return std::nullopt;
+    const std::string next = coils_.next[queued_++].coil;
+    if (const std::string why = sequence_->whyNot(s, next); !why.empty()) {
+      scorer_->deviceMessage("next coil " + next + " refused: " + why);
+      return std::nullopt;
+    }
+    return follow(next, s);
+  }
+  // The next coil after the running one, as `state` left it (the panel's choice after a detach).
+  ui::Continuation follow(const std::string& coil, const State& state) {
+    State start = sequence_->next(state, coil);
+    scorer_->coilChanged(scorer_->time(), coil, *sequence_->model().device, state);
+    return {sequence_->model(), std::move(start), draw_};
+  }
+  // Reset: a new session from the start, with the first coil.
+  void restarted() override {
+    sequence_.emplace(pc_, coils_.first);
+    queued_ = 0;
+    scorer_.emplace(pc_, coils_.first, *sequence_->model().device, sequence_->model().timeStep);
+  }
   // The session so far, for the panel.
   std::vector<ui::Readout> lines() const {
     const planning::ScoreSheet& s = scorer_->running();
-    return {{"session time", fmt("%.1f s", scorer_->time()), false},
-            {"fluoroscopy time", fmt("%.1f s", s.fluoroscopyTime), false},
-            {"repositionings", std::to_string(s.repositionings), false},
-            {"recording", outputs_->record.empty() ? std::string("off (--record SESSION)") : outputs_->record, false}};
+    std::vector<ui::Readout> out{{"session time", fmt("%.1f s", scorer_->time()), false},
+                                 {"fluoroscopy time", fmt("%.1f s", s.fluoroscopyTime), false},
+                                 {"repositionings", std::to_string(s.repositionings), false}};
+    if (sequence_->placed() > 0)
+      out.push_back({"coils", fmt("%zu detached in the sac, ", sequence_->placed()) + sequence_->coil() + " going in",
+                     false});
+    out.push_back(
+        {"recording", outputs_->record.empty() ? std::string("off (--record SESSION)") : outputs_->record, false});
+    return out;
   }
   void closed(const Model& m, const State& s) override {
     const planning::ScoreSheet score = scorer_->finish(m, s);
@@ -75,40 +104,48 @@ class WindowScorer : public ui::RunObserver {
 
  private:
   const planning::PracticeCase& pc_;
-  std::string coil_;
-  Deployment dep_;
-  double dt_;
+  planning::SessionCoils coils_;
+  size_t queued_ = 0;  // next coils of coils_ gone in (or refused)
+  ui::DrawDataHook draw_;
   std::shared_ptr<WindowOutputs> outputs_;
+  std::optional<planning::CoilSequence> sequence_;
   std::optional<planning::SessionScorer> scorer_;
 };
 
-// The window (or an off-screen picture) of a practice session's model and
-// state, with the live read-outs: packing, protrusion and wall-force warnings.
-ui::ViewerOptions practiceViewer(const planning::PracticeCase& pc, const planning::PracticeSession& session,
-                                 const std::string& view) {
-  ui::ViewerOptions v;
-  v.scenePath = pc.name + " - " + session.runningScore().coil;
-  v.view = view;
-  const Deployment dep = session.deployment();
+// What every coil's picture adds to the core's: the rigid catheter (only
+// drawn) and the neck plane.
+ui::DrawDataHook practiceDrawing(const planning::PracticeCase& pc) {
   const DrawMesh neck = neckDisc(pc.sac);
-  v.addDrawData = [dep, neck](const Model& m, const State& s, DrawData& d) {
-    planning::appendInactiveCatheter(m, s, dep, d);
+  return [neck](const Model& m, const State& s, DrawData& d) {
+    if (m.device) planning::appendInactiveCatheter(m, s, *m.device, d);
     if (!neck.triangles.empty()) d.meshes.push_back(neck);
   };
+}
+
+// The window (or an off-screen picture) of a practice session's model and
+// state, with the live read-outs: packing, protrusion and wall-force warnings.
+ui::ViewerOptions practiceViewer(const planning::PracticeCase& pc, const Model& model, const std::string& coil,
+                                 const std::string& view) {
+  ui::ViewerOptions v;
+  v.scenePath = pc.name + " - " + coil;
+  v.view = view;
+  v.addDrawData = practiceDrawing(pc);
   v.legend = sacLegend(pc.sac);
-  v.readouts = liveReadouts(pc.sac, dep, pc.goal.maxWallForce, "Practice: " + pc.name);
+  v.readouts = liveReadouts(pc.sac, *model.device, pc.goal.maxWallForce, "Practice: " + pc.name);
   return v;
 }
 
-// The window's setup for one coil of the case: model, deployment, read-outs, scorer.
-ui::SceneSetup practiceSetup(const planning::PracticeCase& pc, const std::string& coil, std::shared_ptr<WindowOutputs> outputs) {
-  const planning::PracticeSession session(pc, coil);
+// The window's setup for a session of the case's coils: model, deployment, read-outs, scorer.
+ui::SceneSetup practiceSetup(const planning::PracticeCase& pc, const planning::SessionCoils& coils,
+                             std::shared_ptr<WindowOutputs> outputs, std::shared_ptr<WindowScorer>* scorerOut = nullptr) {
+  const ui::DrawDataHook draw = practiceDrawing(pc);
+  const auto scorer = std::make_shared<WindowScorer>(pc, coils, draw, outputs);
+  const planning::CoilSequence& seq = scorer->sequence();
   ui::SceneSetup s;
-  s.model = session.model();
-  s.state = session.state();
-  ui::ViewerOptions v = practiceViewer(pc, session, "3d");
-  s.draw = v.addDrawData;
-  const auto scorer = std::make_shared<WindowScorer>(pc, coil, session.deployment(), session.model().timeStep, outputs);
+  s.model = seq.model();
+  s.state = seq.start();
+  s.draw = draw;
+  ui::ViewerOptions v = practiceViewer(pc, seq.model(), coils.first, "3d");
   s.observer = scorer;
   // The live read-outs, then the session's own figures.
   s.readouts.title = v.readouts.title;
@@ -117,7 +154,8 @@ ui::SceneSetup practiceSetup(const planning::PracticeCase& pc, const std::string
     for (ui::Readout& r : scorer->lines()) out.push_back(std::move(r));
     return out;
   };
-  s.loaded = "loaded " + coil + "; the session starts again";
+  s.loaded = "loaded " + coils.first + "; the session starts again";
+  if (scorerOut) *scorerOut = scorer;
   return s;
 }
 
@@ -125,7 +163,7 @@ ui::SceneSetup practiceSetup(const planning::PracticeCase& pc, const std::string
 
 bool practicePicture(const planning::PracticeCase& pc, const planning::PracticeSession& session,
                      const std::string& path, PictureSize size, std::string& error) {
-  ui::ViewerOptions v = practiceViewer(pc, session, session.view());
+  ui::ViewerOptions v = practiceViewer(pc, session.model(), session.runningScore().coil, session.view());
   v.screenshotPath = path;
   v.width = size.width, v.height = size.height;
   return ui::renderOffscreen(session.model(), session.state(), v, error);
@@ -139,7 +177,10 @@ int practiseInWindow(const planning::PracticeCase& pc, std::string coil, const s
                      double duration, const std::string& screenshot, PictureSize size,
                      std::shared_ptr<WindowOutputs> outputs) {
   if (coil.empty()) coil = pc.coils.front().name;
-  const ui::SceneSetup first = practiceSetup(pc, coil, outputs);
+  const planning::SessionCoils coils = planning::parseCoilSequence(coil);
+  // The scorer of the running session: the panel's next coil goes in through it.
+  auto running = std::make_shared<std::shared_ptr<WindowScorer>>();
+  const ui::SceneSetup first = practiceSetup(pc, coils, outputs, running.get());
   ui::ViewerOptions v;
   v.scenePath = pc.name;
   v.view = view;
@@ -154,14 +195,28 @@ int practiseInWindow(const planning::PracticeCase& pc, std::string coil, const s
   ui::SetupChoices choices;
   for (size_t i = 0; i < pc.coils.size(); ++i) {
     choices.coils.push_back(coilLabel(pc.coils[i]));
-    if (pc.coils[i].name == coil) choices.coil = int(i);
+    if (pc.coils[i].name == coils.first) choices.coil = int(i);
   }
   choices.catheters = {"the case's catheter"};
   choices.catheter = 0;
   choices.catheterFixed = true;
   choices.coilNote = "the case's coil set; choosing one starts the session again";
+  choices.followNote = "the coil is detached: the one chosen goes in next through the same catheter, the detached "
+                       "ones stay in the sac (Reset starts the session again)";
   choices.catheterNote = "the case fixes the catheter position and tip";
-  choices.build = [&pc, outputs](int c, int) { return practiceSetup(pc, pc.coils.at(size_t(c)).name, outputs); };
+  choices.build = [&pc, outputs, running](int c, int) {
+    return practiceSetup(pc, planning::SessionCoils(pc.coils.at(size_t(c)).name), outputs, running.get());
+  };
+  choices.follow = [&pc, running](int c, const Model&, const State& now) {
+    ui::Continuation next = (*running)->follow(pc.coils.at(size_t(c)).name, now);
+    ui::SceneSetup s;
+    s.model = std::move(next.model);
+    s.state = std::move(next.state);
+    s.draw = std::move(next.draw);
+    s.loaded = "loaded " + pc.coils.at(size_t(c)).name + " after " + std::to_string((*running)->sequence().placed()) +
+               " detached coil(s)";
+    return s;
+  };
   v.setup = choices;
   for (const TimedCommand& c : script) v.script.push_back({c.time, c.command, ""});
   for (const auto& [t, name] : views) v.script.push_back({t, std::nullopt, name});

@@ -15,6 +15,7 @@
 #include "io/units.h"
 #include "physics/deployment.h"
 #include "planning/contact_forces.h"
+#include "planning/placed_coils.h"
 #include "planning/run_contacts.h"
 
 namespace coilsim::planning {
@@ -54,12 +55,6 @@ std::string Candidate::name() const {
 }
 
 namespace {
-
-// A coil of a sequence already placed: its rod as the model defines it and its pose now.
-struct PlacedCoil {
-  RodDef def;
-  RodState pose;
-};
 
 // Folds one coil's deployment into the sequence's.
 void accumulate(AutoDeployResult& total, AutoDeployResult&& one) {
@@ -124,22 +119,13 @@ CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const W
       // without them: its rods are added here, not by compileModel.
       const Deployment d = addDeployment(*def.device, def);
       def.device.reset();
-      const size_t firstPlaced = def.rods.size();
-      for (const PlacedCoil& p : placed) def.rods.push_back(p.def);
+      const size_t firstPlaced = addPlacedRods(def, placed);
       addRunContacts(def, setup.sac);
       r.model = compileModel(def);
       r.model.device = d;
       r.state = makeState(r.model);
       r.state.contactScratch.threads.setCount(detectionThreads);
-      for (size_t i = 0; i < placed.size(); ++i) {
-        RodState& s = r.state.rods[firstPlaced + i];
-        const RodState& p = placed[i].pose;
-        s.active = true;
-        s.activeNodes = p.activeNodes;
-        s.beams = p.beams, s.nodes = p.nodes, s.x = p.x, s.q = p.q;
-        std::fill(s.v.begin(), s.v.end(), Vec3::Zero());
-        std::fill(s.w.begin(), s.w.end(), Vec3::Zero());
-      }
+      restorePlacedRods(r.state, firstPlaced, placed);
       chainRod = d.chainRod, catheterNodes = d.tipNode;
       setDrawnCatheterActive(d, r.state, false);
       AutoDeployResult one =
@@ -155,10 +141,7 @@ CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const W
       accumulate(r.deploy, std::move(one));
       if (!goOn) break;
       // The placed coils move while the next one goes in: keep their poses, and add this one.
-      for (size_t i = 0; i < placed.size(); ++i) placed[i].pose = r.state.rods[firstPlaced + i];
-      PlacedCoil now{def.rods[size_t(d.freeRod)], r.state.rods[size_t(d.freeRod)]};
-      now.def.name = coil.name + " (placed)";
-      placed.push_back(std::move(now));
+      keepPlacedCoils(def, r.state, firstPlaced, d.freeRod, coil.name, placed);
     }
     r.sac = measureSac(setup.sac, setup.sacVolume, setup.neck, coilLines(r.model, r.state, chainRod, catheterNodes), setup.metrics);
     r.occlusion = occlusionClass(r.sac.packingDensity, r.sac.neckCoverage);

@@ -25,9 +25,69 @@
 #include "planning/auto_deploy.h"
 #include "planning/case_file.h"
 #include "planning/metrics.h"
+#include "planning/placed_coils.h"
 #include "planning/session_scorer.h"
 
 namespace coilsim::planning {
+
+// The coils of one session, one after the other through the case's
+// catheter, as in a real coiling: once the running coil has detached the
+// next one goes in, and the detached ones stay in the sac as rods
+// (placed_coils.h) that the next one touches. Each coil has a model of its
+// own (the deployment's rods, then the placed coils'); the session's clock
+// and records in the State (time, statistics, warnings) go on across them.
+class CoilSequence {
+ public:
+  // The case's coil `first` going in with nothing placed yet. Throws
+  // io::InputError naming the case file if the coil is not in its set or
+  // the scene cannot be compiled.
+  CoilSequence(const PracticeCase& practiceCase, const std::string& first);
+
+  const Model& model() const { return model_; }
+  // The running coil's start: its deployment at the initial length, the placed coils at rest.
+  const State& start() const { return start_; }
+  const std::string& coil() const { return coils_.back(); }
+  const std::vector<std::string>& coils() const { return coils_; }  // every coil so far, in order
+  size_t placed() const { return placed_.size(); }
+
+  // Why `next` cannot go in after the state `now` of the running coil (it
+  // has not detached; `next` is not in the case's set), or "".
+  std::string whyNot(const State& now, const std::string& next) const;
+  // Goes on with `next`: the running coil, as `now` left it, joins the
+  // placed ones. Returns the state the next coil starts from. Throws
+  // io::InputError saying whyNot, changing nothing.
+  State next(const State& now, const std::string& next);
+
+ private:
+  void build(const std::string& coil, const State* before);
+
+  const PracticeCase* case_;
+  std::vector<std::string> coils_;
+  std::vector<PlacedCoil> placed_;
+  ModelDef def_;  // of the running coil, as compiled
+  size_t firstPlaced_ = 0;
+  Model model_;
+  State start_;
+};
+
+// The coils of a session: the first, then each next one at its session time
+// (a replay) or, without a time, as soon as the one before has detached (a
+// scripted session: --coil a+b+c).
+struct NextCoil {
+  std::string coil;
+  std::optional<double> time;  // s
+};
+struct SessionCoils {
+  std::string first;
+  std::vector<NextCoil> next;
+  SessionCoils(std::string coil, std::vector<NextCoil> after = {}) : first(std::move(coil)), next(std::move(after)) {}
+  SessionCoils(const char* coil) : first(coil) {}
+};
+// "a+b+c" -> a, then b and c each once the one before has detached.
+SessionCoils parseCoilSequence(const std::string& text);
+// Throws io::InputError naming the case file and the first coil of `coils`
+// not in the case's set.
+void checkCoils(const PracticeCase& practiceCase, const SessionCoils& coils);
 
 class PracticeSession {
  public:
@@ -36,6 +96,12 @@ class PracticeSession {
   // Throws io::InputError naming the case file if the coil is not in its set
   // or the scene cannot be compiled.
   PracticeSession(const PracticeCase& practiceCase, const std::string& coilName, const WallForceCheck& contacts = {});
+
+  // The next coil of the case's set goes in through the same catheter from
+  // the next step, the detached ones kept in the sac (CoilSequence).
+  // Returns "" or why not (the running coil has not detached, no such
+  // coil): then nothing changes, and the score sheet lists it.
+  std::string nextCoil(const std::string& coilName);
 
   // Starts a device command at the next step; returns "" or why the device refuses it
   // (a refused command is not recorded as a command; the score sheet lists it).
@@ -49,20 +115,21 @@ class PracticeSession {
   // Ends the session: final metrics, goal check.
   ScoreSheet finish();
 
-  const Model& model() const { return model_; }
+  const Model& model() const { return coils_.model(); }
   const State& state() const { return state_; }
-  const Deployment& deployment() const { return *model_.device; }
+  const Deployment& deployment() const { return *model().device; }
   const DeviceState& deploymentState() const { return state_.device; }
   long steps() const { return steps_; }
   const std::string& view() const { return scorer_->view(); }  // the view looked through now
-  double time() const { return double(steps_) * model_.timeStep; }
+  double time() const { return double(steps_) * model().timeStep; }
+  const CoilSequence& coils() const { return coils_; }
   const ScoreSheet& runningScore() const { return scorer_->running(); }
 
   // The recording (SessionScorer::recording) ending now.
   nlohmann::ordered_json recording() const;
 
  private:
-  Model model_;
+  CoilSequence coils_;
   State state_;
   long steps_ = 0;
   std::optional<SessionScorer> scorer_;
@@ -72,6 +139,7 @@ class PracticeSession {
 // A recorded session, read back.
 struct SessionRecording {
   std::string caseLabel, coil;
+  std::vector<NextCoil> nextCoils;  // each with its time
   double end = 0;  // s
   std::vector<TimedCommand> timeline;
   std::vector<std::pair<double, std::string>> views;
@@ -80,11 +148,12 @@ SessionRecording loadSession(const std::string& path);
 SessionRecording parseSession(const nlohmann::json& document, const std::string& file);
 
 // Plays `timeline` and `views` (inputs at their times) for `end` seconds on a
-// fresh session and returns its score sheet. Used for replay and for
+// fresh session of `coils` and returns its score sheet (a next coil that
+// cannot go in is noted in it and dropped). Used for replay and for
 // scripted practice; identical inputs give identical sheets. `keepGoing`,
 // when given, is asked after each step (a front end's progress and Ctrl-C):
 // false ends the session there, scored as it stands.
-ScoreSheet playSession(const PracticeCase& practiceCase, const std::string& coil,
+ScoreSheet playSession(const PracticeCase& practiceCase, const SessionCoils& coils,
                        const std::vector<TimedCommand>& timeline,
                        const std::vector<std::pair<double, std::string>>& views, double end,
                        nlohmann::ordered_json* recordingOut = nullptr, const WallForceCheck& contacts = {},

@@ -86,6 +86,16 @@ ordered_json scoreJson(const ScoreSheet& s) {
   j["fluoroscopy_time_s"] = s.fluoroscopyTime;
   j["detached"] = s.detached;
   j["detach_in_sac"] = s.detachInSac;
+  if (s.coils.size() > 1) {
+    ordered_json coils = ordered_json::array();
+    for (const CoilOutcome& c : s.coils)
+      coils.push_back({{"coil", c.coil},
+                       {"from_s", c.from},
+                       {"length_placed_mm", units::mToMm(c.lengthPlaced)},
+                       {"detached", c.detached},
+                       {"detach_in_sac", c.detachInSac}});
+    j["coils"] = coils;
+  }
   ordered_json goal;
   goal["min_packing_percent"] = 100 * s.goal.minPackingDensity;
   goal["no_protrusion"] = s.goal.noProtrusion;
@@ -124,6 +134,18 @@ void SessionScorer::viewChanged(double t, const std::string& view) {
   views_.emplace_back(t, view);
 }
 
+void SessionScorer::coilChanged(double t, const std::string& coil, const Deployment& dep, const State& left) {
+  left_.push_back({coil_, coilFrom_, left.device.deployed, coilDetached_, coilInSac_});
+  coil_ = coil;
+  coilFrom_ = t;
+  coilDetached_ = coilInSac_ = false;
+  dep_ = dep;
+  felt_ = FeltTipForce();
+  wasDetached_ = false;
+  score_.coil += " + " + coil;
+  recordedCoils_.emplace_back(t, coil);
+}
+
 void SessionScorer::deviceMessage(const std::string& message) {
   char t[40];
   std::snprintf(t, sizeof t, "t = %.3f s: ", time());
@@ -150,9 +172,9 @@ void SessionScorer::afterStep(const Model& model, const State& state, const Step
   if (!score_.ok) return;
   const DeviceState& ds = state.device;
   if (ds.detached && !wasDetached_) {
-    score_.detached = true;
+    coilDetached_ = true;
     const Vec3& tip = ds.releasedAt;
-    score_.detachInSac = inSac(sac_, tip) && !measure(model, state).protruding;
+    coilInSac_ = inSac(sac_, tip) && !measure(model, state).protruding;
   }
   if (!report.ok()) {
     score_.ok = false;
@@ -179,7 +201,15 @@ void SessionScorer::afterStep(const Model& model, const State& state, const Step
 ScoreSheet SessionScorer::finish(const Model& model, const State& state) const {
   ScoreSheet s = score_;
   s.time = time();
-  s.coilLengthPlaced = state.device.deployed;
+  s.coils = left_;
+  s.coils.push_back({coil_, coilFrom_, state.device.deployed, coilDetached_, coilInSac_});
+  s.detached = s.detachInSac = true;
+  s.coilLengthPlaced = 0;
+  for (const CoilOutcome& c : s.coils) {
+    s.coilLengthPlaced += c.lengthPlaced;
+    s.detached = s.detached && c.detached;
+    s.detachInSac = s.detachInSac && c.detachInSac;
+  }
   s.maxWallPenetration = state.stats.maxWallPenetration;
   s.maxWallPenetrationOfRadius = state.stats.maxWallPenetrationOfRadius;
   const SacMetrics m = measure(model, state);
@@ -215,12 +245,16 @@ ordered_json SessionScorer::recording(double end) const {
   ordered_json r;
   r["format"] = kSessionFormat;
   r["case"] = case_.file;
-  r["coil"] = coil_;
+  r["coil"] = left_.empty() ? coil_ : left_.front().coil;
+  if (!recordedCoils_.empty()) {
+    r["next_coils"] = ordered_json::array();
+    for (const auto& [t, c] : recordedCoils_) r["next_coils"].push_back(ordered_json{{"t_s", t}, {"coil", c}});
+  }
   r["end_s"] = end;
   ordered_json timeline;
   timeline["format"] = io::kTimelineFormat;
   timeline["name"] = case_.name + " session";
-  timeline["description"] = "Inputs of a practice session with " + coil_ + "; play with coilsim practice --replay.";
+  timeline["description"] = "Inputs of a practice session with " + score_.coil + "; play with coilsim practice --replay.";
   timeline["commands"] = ordered_json::array();
   for (const ordered_json& c : recorded_) timeline["commands"].push_back(c);
   r["timeline"] = timeline;

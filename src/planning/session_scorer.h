@@ -22,8 +22,16 @@ namespace coilsim::planning {
 
 inline constexpr const char* kSessionFormat = "coilsim-session/1";
 
+// One coil of a session with several: when it went in and how it was left.
+struct CoilOutcome {
+  std::string coil;
+  double from = 0;          // s of session time it went in at
+  double lengthPlaced = 0;  // m of it outside the catheter when it was left (or at the end)
+  bool detached = false, detachInSac = false;
+};
+
 struct ScoreSheet {
-  std::string caseName, coil;
+  std::string caseName, coil;      // coil: the coils' names joined by " + "
   double time = 0;                 // s of simulated procedure
   double coilLengthPlaced = 0;     // m of coil outside the catheter at the end
   double packingDensity = 0;
@@ -53,6 +61,10 @@ struct ScoreSheet {
   // Device commands refused and device limits reached ("t = 0.000 s: refused:
   // the coil is not fully out ..."), in time order: nothing a trainee did is dropped unsaid.
   std::vector<std::string> deviceMessages;
+  // Every coil of the session, in order (packing, neck coverage, protrusion
+  // and the wall figures above are of all of them together; coil length,
+  // detached and detach in sac sum or require every coil).
+  std::vector<CoilOutcome> coils;
 };
 
 // The score sheet as JSON ("coilsim-score/1"), in edge units (mm, mN, s,
@@ -79,6 +91,9 @@ class SessionScorer {
   // `recorded` is what the file gets (commandJson of the command as given).
   void commandAccepted(double t, const nlohmann::ordered_json& recorded, const DeviceCommand& applied);
   void viewChanged(double t, const std::string& view);
+  // The next coil goes in at session time `t` through `dep`; `left` is the
+  // state the running coil was left in (detached).
+  void coilChanged(double t, const std::string& coil, const Deployment& dep, const State& left);
   // A refused command or a device limit reached, at the session time so far
   // (the score sheet's device_messages).
   void deviceMessage(const std::string& message);
@@ -92,7 +107,8 @@ class SessionScorer {
   // The sheet at the end (final metrics, goal check).
   ScoreSheet finish(const Model& model, const State& state) const;
   // The recording: {"format": "coilsim-session/1", "case", "coil", "end_s",
-  // "timeline": <coilsim-timeline/1 document>, "views": [{"t_s", "view"}]}.
+  // "timeline": <coilsim-timeline/1 document>, "views": [{"t_s", "view"}]},
+  // and "next_coils": [{"t_s", "coil"}] after "coil" when there were several.
   nlohmann::ordered_json recording(double end) const;
 
   const ScoreSheet& running() const { return score_; }
@@ -105,7 +121,10 @@ class SessionScorer {
 
   const PracticeCase& case_;
   WallForceCheck contacts_;
-  std::string coil_;
+  std::string coil_;               // the running coil
+  std::vector<CoilOutcome> left_;  // the coils before it
+  double coilFrom_ = 0;            // s, when the running coil went in
+  bool coilDetached_ = false, coilInSac_ = false;
   Deployment dep_;
   double dt_ = 0;
   Sac sac_;
@@ -122,6 +141,7 @@ class SessionScorer {
   FeltTipForce felt_;
   std::vector<nlohmann::ordered_json> recorded_;  // accepted commands as the timeline file holds them
   std::vector<std::pair<double, std::string>> views_;
+  std::vector<std::pair<double, std::string>> recordedCoils_;  // the next coils at their times
 };
 
 }  // namespace coilsim::planning

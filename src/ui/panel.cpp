@@ -221,7 +221,7 @@ void drawPanel(Session& session, Views& views, PanelContext& ctx) {
   if (!session.hasDeployment() && header("Deployment", ImGuiTreeNodeFlags_DefaultOpen))
     drawDeploymentControls(session, ctx);
   if (header("View", ImGuiTreeNodeFlags_DefaultOpen)) viewSection(views, ctx);
-  if (ctx.setup && header("Coil and catheter", engineer)) drawSetupSection(*ctx.setup, ctx);
+  if (ctx.setup && header("Coil and catheter", engineer)) drawSetupSection(*ctx.setup, session, ctx);
   if (header("Simulation", engineer)) simulationSection(session, ctx);
   if (header("Colours and markers", ImGuiTreeNodeFlags_None)) overlaySection(session, ctx);
   if (header("Effects", engineer)) effectsSection(session, ctx);

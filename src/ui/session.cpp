@@ -34,7 +34,18 @@ void Session::restartDevice() {
   deviceMessages_.clear();
 }
 
+void Session::carryOn(Continuation next) {
+  if (!start_) start_ = Continuation{std::move(model_), initial_, hook_};
+  model_ = std::move(next.model);
+  state_ = std::move(next.state);
+  hook_ = std::move(next.draw);
+  // A refused step of the model before is no reason to stop this one.
+  halt_.reset();
+  refreshDrawData();
+}
+
 void Session::replace(const Model& model, const State& state, DrawDataHook hook) {
+  start_.reset();
   model_ = model;
   initial_ = state;
   state_ = state;
@@ -146,6 +157,8 @@ bool Session::stepAndCheck() {
     return false;
   }
   ++steps_;
+  if (observer_)
+    if (std::optional<Continuation> next = observer_->continuation(model_, state_)) carryOn(std::move(*next));
   return true;
 }
 
@@ -166,6 +179,12 @@ long Session::stepMany(int count) {
 }
 
 void Session::reset() {
+  if (start_) {
+    model_ = std::move(start_->model);
+    initial_ = std::move(start_->state);
+    hook_ = std::move(start_->draw);
+    start_.reset();
+  }
   state_ = initial_;
   restartDevice();
   if (observer_) {

@@ -35,6 +35,15 @@ struct ScriptedInput {
   std::string view;  // used when there is no command
 };
 
+// A session going on with another model (practice: the next coil through
+// the same catheter, the detached ones kept in the sac as rods), built by
+// the app: the model, the state to go on from, and the draw hook.
+struct Continuation {
+  Model model;
+  State state;
+  DrawDataHook draw;
+};
+
 // What the app does with the inputs and steps of a window run (practice:
 // record every input and keep the score). The ui calls it; the app
 // implements it with the layers the ui must not know. Defaults do nothing.
@@ -55,6 +64,10 @@ class RunObserver {
   // report is the step's (a refused step holds its Failure).
   virtual void beforeStep(const State&) {}
   virtual void afterStep(const Model&, const State&, const StepReport&) {}
+  // After every step taken: a model to go on with from the next step (a
+  // scripted session's next coil once the running one has detached), or
+  // nothing. The session's clock, inputs and observer stay.
+  virtual std::optional<Continuation> continuation(const Model&, const State&) { return std::nullopt; }
   // The session went back to its start (Reset); the inputs so far no longer count.
   virtual void restarted() {}
   // The window closes on this model and state (runWindow calls it).
@@ -121,6 +134,11 @@ class Session {
   // timeline. The observer and the view stay.
   void replace(const Model& model, const State& state, DrawDataHook hook);
 
+  // Goes on with another model and state (Continuation) between two steps:
+  // the session time, timeline, script, messages, observer, view and
+  // playing stay; reset() still goes back to the session's start.
+  void carryOn(Continuation next);
+
   // Who records the inputs and steps (may be null). It is told the current view at once.
   void setObserver(std::shared_ptr<RunObserver> observer);
   RunObserver* observer() const { return observer_.get(); }
@@ -171,6 +189,8 @@ class Session {
   State initial_;
   State state_;
   DrawDataHook hook_;
+  // The session's first model and hook, while another carries it on (reset goes back to them).
+  std::optional<Continuation> start_;
   RealTimeLoop loop_;
   DrawData draw_;
   bool playing_ = false;

@@ -37,6 +37,12 @@ struct SetupChoices {
   // Builds the setup for the chosen indices. Throws std::exception saying
   // why it cannot (a coil longer than the catheter allows, ...).
   std::function<SceneSetup(int coil, int catheter)> build;
+  // Optional (practice): once the running coil has detached, a coil chosen
+  // goes in after it instead, the detached ones kept in the sac. Builds
+  // that from the session's model and state now (the observer stays and is
+  // told by the app). Throws std::exception saying why it cannot.
+  std::function<SceneSetup(int coil, const Model& now, const State& state)> follow;
+  std::string followNote;  // shown under the coil combo once a coil has detached
   explicit operator bool() const { return bool(build); }
 };
 
@@ -54,7 +60,12 @@ struct PanelContext;
 // `status`. Returns true when loaded.
 bool applySetup(SetupChoices& choices, int coil, int catheter, Session& session, PanelContext& panel);
 
-// The panel section: the two combos, what is loaded, the last error.
-void drawSetupSection(const SetupChoices& choices, PanelContext& panel);
+// True when a coil chosen now goes in after the running one (`follow`):
+// the session's coil has detached.
+bool followsNow(const SetupChoices& choices, const Session& session);
+
+// The panel section: the two combos (once the coil has detached, the coil
+// combo offers the next coil), what is loaded, the last error.
+void drawSetupSection(const SetupChoices& choices, const Session& session, PanelContext& panel);
 
 }  // namespace coilsim::ui

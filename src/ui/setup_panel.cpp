@@ -52,18 +52,28 @@ std::string coilQuantities() {
 
 }  // namespace
 
+bool followsNow(const SetupChoices& choices, const Session& session) {
+  return choices.follow && session.hasDeployment() && session.deploymentState().detached;
+}
+
 bool applySetup(SetupChoices& choices, int coil, int catheter, Session& session, PanelContext& panel) {
+  // After a detach a coil goes in after the others; before, it starts the session again.
+  const bool follow = followsNow(choices, session) && catheter == choices.catheter;
   SceneSetup setup;
   try {
-    setup = choices.build(coil, catheter);
+    setup = follow ? choices.follow(coil, session.model(), session.state()) : choices.build(coil, catheter);
   } catch (const std::exception& e) {
     // The running setup stays; the panel says why the choice did not load.
     panel.setupStatus = {e.what(), true};
     return false;
   }
-  session.replace(setup.model, setup.state, setup.draw);
-  session.setObserver(setup.observer);
-  panel.readouts = setup.readouts;
+  if (follow) {
+    session.carryOn({std::move(setup.model), std::move(setup.state), std::move(setup.draw)});
+  } else {
+    session.replace(setup.model, setup.state, setup.draw);
+    session.setObserver(setup.observer);
+    panel.readouts = setup.readouts;
+  }
   panel.device.confirmDetach = false;
   choices.coil = coil;
   choices.catheter = catheter;
@@ -71,11 +81,12 @@ bool applySetup(SetupChoices& choices, int coil, int catheter, Session& session,
   return true;
 }
 
-void drawSetupSection(const SetupChoices& choices, PanelContext& ctx) {
-  ImGui::TextDisabled("coil (shape, loop, length, stiffness)");
+void drawSetupSection(const SetupChoices& choices, const Session& session, PanelContext& ctx) {
+  const bool follow = followsNow(choices, session);
+  ImGui::TextDisabled(follow ? "next coil (shape, loop, length, stiffness)" : "coil (shape, loop, length, stiffness)");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", coilQuantities().c_str());
-  const int coil = combo("##coil", choices.coils, choices.coil, "the scene's coil");
-  note(choices.coilNote);
+  const int coil = combo("##coil", choices.coils, follow ? -1 : choices.coil, "choose the next coil");
+  note(follow ? choices.followNote : choices.coilNote);
   ImGui::TextDisabled("catheter tip");
   ImGui::BeginDisabled(choices.catheterFixed);
   const int catheter = combo("##catheter", choices.catheters, choices.catheter, "the scene's catheter");

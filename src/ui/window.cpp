@@ -144,7 +144,9 @@ int runWindow(Model& model, State& state, const ViewerOptions& options) {
     userView();
     if (setup && panel.setupRequested) {
       panel.setupRequested = false;
-      if (applySetup(*setup, panel.setupCoil, panel.setupCatheter, session, panel)) {
+      // A next coil goes on playing in the same picture; another setup starts paused, framed anew.
+      const bool follows = followsNow(*setup, session);
+      if (applySetup(*setup, panel.setupCoil, panel.setupCatheter, session, panel) && !follows) {
         session.setPlaying(false);
         panel.fitRequested = true;
       }
