@@ -163,17 +163,25 @@ void printJson(Figures& fig) {
 }  // namespace
 
 int runBench(const std::vector<std::string>& args) {
-  bool json = false, quick = false, contactOnly = false;
+  bool json = false, quick = false, contactOnly = false, practiceOnly = false;
   for (const std::string& a : args) {
     if (a == "--json") json = true;
     else if (a == "--quick") quick = true;
     else if (a == "--contact") contactOnly = true;
+    else if (a == "--practice") practiceOnly = true;
     else {
-      std::fprintf(stderr, "coilsim bench: unknown option '%s' (known: --json, --quick, --contact)\n", a.c_str());
+      std::fprintf(stderr, "coilsim bench: unknown option '%s' (known: --json, --quick, --contact, --practice)\n",
+                   a.c_str());
       return 2;
     }
   }
   Figures fig;
+  // The practice window's line alone (issue 16).
+  if (practiceOnly) {
+    if (app::haveUi()) benchPracticeWindowFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
+    if (json) printJson(fig);
+    return 0;
+  }
   // The contact figures alone: what a profile of detection wants to see.
   if (contactOnly) {
     benchContactFigures([&](const std::string& k, double v) { fig.set(k, v); }, quick, json);
@@ -208,7 +216,10 @@ int runBench(const std::vector<std::string>& args) {
   benchContactFigures(record, quick, json);
   benchDenseFigures(record, quick, json);
   ++phase;
-  if (app::haveUi()) benchRenderFigures(record, quick, json);
+  if (app::haveUi()) {
+    benchRenderFigures(record, quick, json);
+    benchPracticeWindowFigures(record, quick, json);
+  }
   progress.finish();
   if (json) {
     printJson(fig);

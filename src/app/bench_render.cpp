@@ -16,12 +16,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// scenes/default.json from the working directory, else from the source tree
-// the binary was built in (build*/src/app/coilsim is three levels down).
-fs::path findDefaultScene() {
-  const fs::path rel = fs::path("scenes") / "default.json";
+}  // namespace
+
+fs::path findSourceFile(const fs::path& rel) {
   std::error_code ec;
   if (fs::exists(rel, ec)) return rel;
+  // build*/src/app/coilsim is three levels down.
   fs::path dir = fs::read_symlink("/proc/self/exe", ec);
   if (ec) return {};
   for (int up = 0; up < 6 && dir.has_parent_path() && dir != dir.parent_path(); ++up) {
@@ -31,10 +31,8 @@ fs::path findDefaultScene() {
   return {};
 }
 
-}  // namespace
-
 void benchRenderFigures(const std::function<void(const std::string&, double)>& set, bool quick, bool json) {
-  const fs::path scene = findDefaultScene();
+  const fs::path scene = findSourceFile(fs::path("scenes") / "default.json");
   if (scene.empty()) {
     std::fprintf(stderr, "bench: render figures skipped: scenes/default.json not found (run from the source tree)\n");
     return;

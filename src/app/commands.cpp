@@ -64,6 +64,7 @@ constexpr std::array kBench{
     flag("--json", "print the figures as one JSON document"),
     flag("--quick", "fewer repeats: rougher figures in a fraction of the time"),
     flag("--contact", "the contact figures alone (detection against its fresh-query baseline, dense packing)"),
+    flag("--practice", "the practice window's figures alone (four coils in the 7 mm sac, a fifth pushed)"),
     kQuiet,
 };
 

@@ -68,3 +68,5 @@ int runValidateWindow(const WorkbenchArgs&, const WindowArgs&) {
 
 // The bench's render figures: none to report.
 void coilsim::benchRenderFigures(const std::function<void(const std::string&, double)>&, bool, bool) {}
+void coilsim::benchPracticeWindowFigures(const std::function<void(const std::string&, double)>&, bool, bool) {}
+std::filesystem::path coilsim::findSourceFile(const std::filesystem::path&) { return {}; }

@@ -71,7 +71,7 @@ class WindowScorer : public ui::RunObserver {
                                  {"fluoroscopy time", fmt("%.1f s", s.fluoroscopyTime), false},
                                  {"repositionings", std::to_string(s.repositionings), false}};
     if (sequence_->placed() > 0)
-      out.push_back({"coils", fmt("%zu detached in the sac, ", sequence_->placed()) + sequence_->coil() + " going in",
+      out.push_back({"coils", std::to_string(sequence_->placed()) + " detached in the sac, " + sequence_->coil() + " going in",
                      false});
     out.push_back(
         {"recording", outputs_->record.empty() ? std::string("off (--record SESSION)") : outputs_->record, false});
