@@ -105,6 +105,21 @@ void tubeFrames(const std::vector<Vec3>& centre, std::vector<Vec3>& tangents, st
   }
 }
 
+TubeOptions tubeDetail(const TubeOptions& most, double radiusPixels, double segmentPixels, double toleranceRing,
+                       double longestPiece) {
+  TubeOptions o = most;
+  const int lo = std::min(6, std::max(most.sides, 3));
+  if (!(radiusPixels > 0) || !std::isfinite(radiusPixels) || !(toleranceRing > 0)) return o;
+  // r (1 - cos(pi / n)) <= tol  <=>  n >= pi / acos(1 - tol / r).
+  const double c = 1.0 - toleranceRing / radiusPixels;
+  const double needed = c <= -1.0 ? 3.0 : M_PI / std::acos(std::max(c, -1.0));
+  o.sides = std::clamp(int(std::ceil(needed - 1e-9)), lo, std::max(most.sides, lo));
+  o.capRings = std::clamp(int(std::ceil(radiusPixels / 3.0)), 1, std::max(most.capRings, 1));
+  if (segmentPixels > 0 && std::isfinite(segmentPixels) && longestPiece > 0)
+    o.subdivisions = std::clamp(int(std::ceil(segmentPixels / longestPiece)) - 1, 0, std::max(most.subdivisions, 0));
+  return o;
+}
+
 void appendTube(const DrawTube& tube, const TubeOptions& options, TriangleMesh& out) {
   // Only finite nodes take part; a blown-up state must never draw garbage.
   std::vector<Vec3> centre;

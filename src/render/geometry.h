@@ -35,6 +35,17 @@ struct TubeOptions {
   int subdivisions = 0;
 };
 
+// The detail a tube needs where it is drawn `radiusPixels` thick (its
+// radius on screen) with nodes `segmentPixels` apart, at most `most`'s:
+// sides so that the polygon strays from the circle by at most
+// `toleranceRing` pixels (its sagitta r (1 - cos(pi / sides))), at least 6;
+// rings between nodes so that no piece is longer than `longestPiece`
+// pixels; cap rings one per 3 pixels of radius, at least one. A thin wire
+// seen from afar needs a fraction of the triangles a close-up does, and
+// software GL pays for every triangle.
+TubeOptions tubeDetail(const TubeOptions& most, double radiusPixels, double segmentPixels,
+                       double toleranceRing = 0.5, double longestPiece = 6.0);
+
 // Appends a tube of radius tube.radius around tube.centre: rings at each node
 // (and at `subdivisions` points between nodes)
 // perpendicular to the centre-line tangent, oriented by parallel transport

@@ -7,6 +7,7 @@
 #include "render/gl_api.h"
 #include "render/gpu.h"
 #include "render/shader.h"
+#include "render/tube_cache.h"
 
 namespace coilsim::render {
 
@@ -36,19 +37,37 @@ void biplaneHalves(int width, int& left, int& right) {
   right = std::max(width - kBiplaneGap - left, 1);
 }
 
-int roleIndex(RodRole role) {
-  switch (role) {
-    case RodRole::Coil: return 0;
-    case RodRole::Catheter: return 1;
-    case RodRole::Wire: return 2;
-  }
-  return 0;
-}
-
 void setMatrices(const Program& p, const Camera& camera, double aspect) {
   const Mat4f view = camera.view(), projection = camera.projection(aspect);
   glUniformMatrix4fv(p.uniform("uView"), 1, GL_FALSE, view.data());
   glUniformMatrix4fv(p.uniform("uProjection"), 1, GL_FALSE, projection.data());
+}
+
+// The X-ray image's pixels per frame pixel (XRaySettings::resolutionScale).
+double xrayScale(const XRaySettings& x, int viewHeight) {
+  return x.resolutionScale > 0 ? std::min(double(x.resolutionScale), 1.0) : (viewHeight > 480 ? 0.5 : 1.0);
+}
+
+// Pixels per metre at a tube where it is nearest the eye, in the views of
+// `mode` (biplane: the nearer of the two projections), `height` pixels tall.
+TubeCache::PixelScale pixelScale(const Camera& camera, const RenderSettings& s, int height) {
+  std::vector<Camera> eyes{camera};
+  if (s.mode == ViewMode::Biplane) eyes.push_back(lateralView(camera));
+  // An X-ray pixel is a line integral across the wire, which a polygon's
+  // flat sides change more than they move a shaded edge: its detail is
+  // chosen as for an image of twice the pixels.
+  const double pixels = s.mode == ViewMode::Shaded ? double(height) : 2.0 * height * xrayScale(s.xray, height);
+  const double perDepth = pixels / (2.0 * std::tan(0.5 * camera.fovY));
+  return [eyes, perDepth](const DrawTube& t) {
+    double nearest = 1e300;
+    for (const Camera& c : eyes) {
+      const Vec3 eye = c.eye(), f = c.forward();
+      for (const Vec3& p : t.centre)
+        if (p.allFinite()) nearest = std::min(nearest, (p - eye).dot(f) - t.radius);
+    }
+    // Behind or at the eye: no size to go by, full detail.
+    return nearest > 1e-9 && nearest < 1e300 ? perDepth / nearest : 0.0;
+  };
 }
 
 }  // namespace
@@ -83,6 +102,10 @@ struct Renderer::Impl {
   std::vector<ViewportInfo> viewports;
 
   TriangleMesh scratch;
+  TubeCache tubeCache;
+  // The vessels' draw order is kept while the camera and the meshes stay.
+  bool sortedValid = false;
+  Vec3 sortedEye = Vec3::Zero(), sortedForward = Vec3::Zero();
   // The vessel meshes change rarely: rebuild only when their data does.
   std::vector<DrawMesh> meshSource;
   bool meshesBuilt = false;
@@ -92,9 +115,9 @@ struct Renderer::Impl {
   std::vector<std::uint32_t> sorted;
 
   bool ensureTargets(int w, int h, int wantSamples, std::string& error);
-  void uploadGeometry(const DrawData& data, const RenderSettings& s);
+  void uploadGeometry(const DrawData& data, const RenderSettings& s, const TubeCache::PixelScale& scale);
   void uploadMeshes(const DrawData& data);
-  void sortMeshes(const Camera& camera);
+  void sortMeshes(const Camera& camera, bool keep);
   void drawShaded(const ViewportInfo& vp, const RenderSettings& s);
   void drawXRay(const ViewportInfo& vp, const RenderSettings& s);
 };
@@ -143,13 +166,10 @@ bool Renderer::Impl::ensureTargets(int w, int h, int wantSamples, std::string& e
   return true;
 }
 
-void Renderer::Impl::uploadGeometry(const DrawData& data, const RenderSettings& s) {
-  for (int role = 0; role < 3; ++role) {
-    scratch.clear();
-    for (const DrawTube& t : data.tubes)
-      if (roleIndex(t.role) == role) appendTube(t, s.tube, scratch);
-    tubes[role].upload(scratch);
-  }
+void Renderer::Impl::uploadGeometry(const DrawData& data, const RenderSettings& s, const TubeCache::PixelScale& scale) {
+  tubeCache.update(data.tubes, s.tube, s.tubeDetailBySize ? scale : TubeCache::PixelScale(), s.keepGeometry);
+  for (int role = 0; role < kTubeRoles; ++role)
+    if (tubeCache.changed(role)) tubes[role].upload(tubeCache.mesh(role));
   scratch.clear();
   if (s.drawPoints && s.mode == ViewMode::Shaded && !data.points.empty()) {
     double radius = s.pointRadius;
@@ -174,6 +194,7 @@ void Renderer::Impl::uploadMeshes(const DrawData& data) {
   }
   if (same && meshesBuilt) return;
   meshesBuilt = true;
+  sortedValid = false;
   meshSource = data.meshes;
   meshGeometry.clear();
   for (const DrawMesh& m : data.meshes) appendMesh(m, meshGeometry);
@@ -187,11 +208,15 @@ void Renderer::Impl::uploadMeshes(const DrawData& data) {
   meshes.upload(meshGeometry);
 }
 
-void Renderer::Impl::sortMeshes(const Camera& camera) {
+void Renderer::Impl::sortMeshes(const Camera& camera, bool keep) {
   // Back to front by centroid distance along the view direction, so that
   // alpha blending composites the far side of a vessel before the near side.
   const size_t nt = centroids.size();
   if (!nt) return;
+  if (keep && sortedValid && sortedEye == camera.eye() && sortedForward == camera.forward()) return;
+  sortedValid = true;
+  sortedEye = camera.eye();
+  sortedForward = camera.forward();
   const Eigen::Vector3f eye = camera.eye().cast<float>(), f = camera.forward().cast<float>();
   order.resize(nt);
   for (size_t t = 0; t < nt; ++t) order[t] = {(centroids[t] - eye).dot(f), std::uint32_t(t)};
@@ -241,7 +266,7 @@ void Renderer::Impl::drawShaded(const ViewportInfo& vp, const RenderSettings& s)
   points.draw();
 
   if (s.drawMeshes && !meshes.empty()) {
-    sortMeshes(camera);
+    sortMeshes(camera, s.keepGeometry);
     glDisable(GL_CULL_FACE);
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
@@ -268,7 +293,7 @@ void Renderer::Impl::drawShaded(const ViewportInfo& vp, const RenderSettings& s)
 void Renderer::Impl::drawXRay(const ViewportInfo& view, const RenderSettings& s) {
   const XRaySettings& x = s.xray;
   // The X-ray image may have fewer pixels than its place in the frame.
-  const double k = x.resolutionScale > 0 ? std::min(double(x.resolutionScale), 1.0) : (view.height > 480 ? 0.5 : 1.0);
+  const double k = xrayScale(x, view.height);
   ViewportInfo vp = view;
   if (k < 1) {
     vp.x = int(view.x * k);
@@ -357,7 +382,7 @@ bool Renderer::render(const DrawData& data, const Camera& camera, const RenderSe
   a.width = std::clamp(a.width, 1, width - a.x);
   a.height = std::clamp(a.height, 1, height - a.y);
   if (!r.ensureTargets(width, height, std::max(settings.samples, 0), error)) return false;
-  r.uploadGeometry(data, settings);
+  r.uploadGeometry(data, settings, pixelScale(camera, settings, a.height));
 
   // Outside the scene area (under a side panel) the frame is plain.
   glBindFramebuffer(GL_FRAMEBUFFER, r.frame.framebuffer());

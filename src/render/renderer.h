@@ -45,7 +45,13 @@ struct XRaySettings {
 struct RenderSettings {
   ViewMode mode = ViewMode::Shaded;
   int samples = 4;              // multisampling of the 3D view (0: off); falls back to 0 if unsupported
-  TubeOptions tube{16, 3, 1.0, 3};  // 16 sides, 3 cap rings, 3 rings between nodes
+  TubeOptions tube{16, 3, 1.0, 3};  // at most 16 sides, 3 cap rings, 3 rings between nodes
+  // Each tube at the detail its size on screen needs (tubeDetail), up to
+  // `tube`; off: every tube at `tube`'s detail, as the renderer drew before.
+  bool tubeDetailBySize = true;
+  // Keep triangles that did not change (tubes, the vessels' draw order
+  // while the camera stays); off: everything built and sent every frame.
+  bool keepGeometry = true;
   bool drawMeshes = true;
   bool drawPoints = true;       // 3D view only: X-rays do not show contact markers
   double pointRadius = 0;       // m; 0 picks 1.6 times the thickest tube

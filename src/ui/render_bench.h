@@ -2,11 +2,13 @@
 // Render performance for `coilsim bench`: frames per second of the 3D and
 // X-ray views off-screen (OSMesa), and how a real-time frame divides between
 // physics and drawing.
+#include <functional>
 #include <optional>
 #include <string>
 
 #include "physics/model.h"
 #include "physics/state.h"
+#include "render/renderer.h"
 #include "ui/session.h"
 
 namespace coilsim::ui {
@@ -21,6 +23,9 @@ struct RenderBenchOptions {
   // time at 60 frames per second: round(1 / (60 * model.timeStep)), at least 1.
   int stepsPerFrame = 0;
   DrawDataHook addDrawData;        // optional vessel meshes / markers, as in ViewerOptions
+  // Optional: changes the renderer's settings after the window's choice
+  // (a baseline drawn as the renderer drew before, a probe of one part).
+  std::function<void(render::RenderSettings&)> adjustSettings;
   // Optional deployment; its timeline drives the stepping measurement (e.g.
   // a push from t = 0, so physics slides the coil as in use).
   std::vector<TimedCommand> timeline;
@@ -29,9 +34,14 @@ struct RenderBenchOptions {
 struct RenderBenchResult {
   double fps3d = 0, fpsXRay = 0, fpsBiplane = 0;  // drawn frames per second (GPU finished)
   double ms3d = 0, msXRay = 0, msBiplane = 0;     // milliseconds per frame
+  // CPU milliseconds per frame of the whole process (every thread of a
+  // software GL included): the work a frame takes, which other processes
+  // on a shared machine do not inflate as they do the wall time above.
+  double cpuMs3d = 0, cpuMsXRay = 0, cpuMsBiplane = 0;
   // Stepping measurement (3D view): each frame takes stepsPerFrame steps, then draws.
   int stepsPerFrame = 0;
   double physicsMsPerFrame = 0, renderMsPerFrame = 0;
+  double physicsCpuMsPerFrame = 0;  // CPU time of the process while stepping (see cpuMs3d)
   double physicsShare = 0, renderShare = 0;  // fractions of the frame time, summing to 1
   long refusedSteps = 0;                     // steps refused (blow-ups) during the measurement
   std::string gl;                            // GL version / renderer measured

@@ -189,6 +189,39 @@ TEST(TubeGeometry, ParallelTransportHasNoTwist) {
   }
 }
 
+// Reference: a regular n-gon inscribed in a circle of radius r strays from
+// it by its sagitta r (1 - cos(pi / n)); tubeDetail takes the fewest sides
+// that keep it within the tolerance (at least 6, at most the cap).
+TEST(TubeDetail, FewestSidesWithinTheSilhouetteTolerance) {
+  const TubeOptions most{64, 3, 1.0, 3};
+  const double tol = 0.5;
+  for (const double r : {0.3, 1.0, 2.0, 3.0, 5.0, 8.0, 13.0, 40.0, 200.0}) {
+    const int n = tubeDetail(most, r, 0, tol).sides;
+    auto sagitta = [r](int sides) { return r * (1 - std::cos(M_PI / sides)); };
+    EXPECT_GE(n, 6) << r;
+    EXPECT_LE(n, 64) << r;
+    if (n < 64) EXPECT_LE(sagitta(n), tol + 1e-12) << r << " px: " << n << " sides";
+    if (n > 6) EXPECT_GT(sagitta(n - 1), tol) << r << " px: " << n - 1 << " sides would do";
+  }
+  EXPECT_EQ(tubeDetail(TubeOptions{16, 3, 1.0, 3}, 200.0, 0).sides, 16);  // never above the cap
+  // No size known: the full detail.
+  const TubeOptions full = tubeDetail(most, 0, 0);
+  EXPECT_EQ(full.sides, 64);
+  EXPECT_EQ(full.subdivisions, 3);
+}
+
+// Each of the sub + 1 pieces a segment is cut into is at most the longest
+// allowed, and one piece fewer would not be (below the cap).
+TEST(TubeDetail, PiecesBetweenNodesNoLongerThanAsked) {
+  const TubeOptions most{16, 3, 1.0, 8};
+  for (const double seg : {1.0, 5.9, 6.0, 6.1, 12.0, 20.0, 47.0}) {
+    const int sub = tubeDetail(most, 4.0, seg, 0.5, 6.0).subdivisions;
+    EXPECT_LE(seg / (sub + 1), 6.0 + 1e-12) << seg;
+    if (sub > 0) EXPECT_GT(seg / sub, 6.0) << seg;
+  }
+  EXPECT_EQ(tubeDetail(most, 4.0, 1000.0).subdivisions, 8);
+}
+
 TEST(SphereAndArrow, ClosedAndOutwards) {
   TriangleMesh s;
   appendSphere(Vec3(1, 2, 3), 0.5, Colour(1, 1, 0, 1), s);
