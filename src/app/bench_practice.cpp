@@ -95,26 +95,55 @@ void benchPracticeWindowFigures(const std::function<void(const std::string&, dou
   o.timeline = {{0.0, push}};
   o.frames = quick ? 10 : 30;
   if (!json) std::fprintf(stderr, "bench: drawing the practice window at 1280x720 off-screen...\n");
-  ui::RenderBenchResult r, a;
+  // The baseline of the drawing: the same frames drawn as the renderer drew
+  // them before issue 16 (every tube at full detail, everything rebuilt
+  // and sent each frame).
+  ui::RenderBenchOptions before = o;
+  before.adjustSettings = [](render::RenderSettings& s) {
+    s.tubeDetailBySize = false;
+    s.keepGeometry = false;
+  };
+  ui::RenderBenchResult r, b, a;
   std::string error;
-  if (!ui::benchRender(model, state, o, r, error) || !ui::benchRender(alone, aloneState, o, a, error)) {
+  if (!ui::benchRender(model, state, o, r, error) || !ui::benchRender(model, state, before, b, error) ||
+      !ui::benchRender(alone, aloneState, o, a, error)) {
     std::fprintf(stderr, "bench: practice window figures skipped: %s\n", error.c_str());
     return;
   }
   const double frameSimulated = units::sToMs(r.stepsPerFrame * model.timeStep);
   const double realTime = frameSimulated / r.physicsMsPerFrame, aloneRealTime = frameSimulated / a.physicsMsPerFrame;
   set("practice4_physics_realtime", realTime);
-  set("practice4_physics_realtime_over_alone", realTime / aloneRealTime);
+  set("practice4_physics_realtime_alone", aloneRealTime);
+  set("practice4_physics_realtime_cpu", frameSimulated / r.physicsCpuMsPerFrame);
   set("practice4_ms_3d", r.ms3d);
   set("practice4_ms_xray", r.msXRay);
   set("practice4_ms_biplane", r.msBiplane);
+  set("practice4_ms_3d_before", b.ms3d);
+  set("practice4_ms_xray_before", b.msXRay);
+  set("practice4_ms_biplane_before", b.msBiplane);
+  set("practice4_cpu_ms_3d", r.cpuMs3d);
+  set("practice4_cpu_ms_xray", r.cpuMsXRay);
+  set("practice4_cpu_ms_biplane", r.cpuMsBiplane);
+  set("practice4_cpu_ms_3d_before", b.cpuMs3d);
+  set("practice4_cpu_ms_xray_before", b.cpuMsXRay);
+  set("practice4_cpu_ms_biplane_before", b.cpuMsBiplane);
   if (json) return;
-  std::printf("practice window, 4 coils detached in the 7 mm sac, 5th pushing at 5 mm/s (%s):\n", r.gl.c_str());
-  std::printf("  physics %.2fx real time (%.1f ms per %d-step frame; the 5th coil alone %.2fx: ratio %.2f)%s\n", realTime,
-              r.physicsMsPerFrame, r.stepsPerFrame, aloneRealTime, realTime / aloneRealTime,
+  std::printf("practice window, 4 coils detached in the 7 mm sac, 5th pushing at 5 mm/s: physics x real time, drawing "
+              "ms per frame (3D, X-ray) (%s):\n",
+              r.gl.c_str());
+  std::printf("  physics %.2fx real time (%.1f ms, %.1f ms of CPU, for a %d-step frame: %.2fx real time in CPU time); the "
+              "5th coil alone in the sac %.1fx: the four placed coils make it %.0fx slower%s\n",
+              realTime, r.physicsMsPerFrame, r.physicsCpuMsPerFrame, r.stepsPerFrame,
+              frameSimulated / r.physicsCpuMsPerFrame, aloneRealTime, aloneRealTime / realTime,
               r.refusedSteps ? " - some steps were refused" : "");
-  std::printf("  drawing ms per frame at 1280x720: 3D %.1f, X-ray %.1f, biplane %.1f (the 5th alone: %.1f, %.1f, %.1f)\n",
-              r.ms3d, r.msXRay, r.msBiplane, a.ms3d, a.msXRay, a.msBiplane);
+  std::printf("  drawing at 1280x720, wall ms per frame: 3D %.1f, X-ray %.1f, biplane %.1f; drawn as before issue 16 (this "
+              "run): %.1f, %.1f, %.1f (%.2fx, %.2fx, %.2fx)\n",
+              r.ms3d, r.msXRay, r.msBiplane, b.ms3d, b.msXRay, b.msBiplane, b.ms3d / r.ms3d, b.msXRay / r.msXRay,
+              b.msBiplane / r.msBiplane);
+  std::printf("  CPU ms per frame, every thread: 3D %.1f, X-ray %.1f, biplane %.1f; before: %.1f, %.1f, %.1f (%.2fx, "
+              "%.2fx, %.2fx)\n",
+              r.cpuMs3d, r.cpuMsXRay, r.cpuMsBiplane, b.cpuMs3d, b.cpuMsXRay, b.cpuMsBiplane, b.cpuMs3d / r.cpuMs3d,
+              b.cpuMsXRay / r.cpuMsXRay, b.cpuMsBiplane / r.cpuMsBiplane);
 }
 
 }  // namespace coilsim

@@ -116,7 +116,9 @@ constexpr std::array kPlanMerge{
 };
 
 constexpr std::array kPractice{
-    value("--coil", K::Coil, "NAME", "a coil of the case's set (default its first)"),
+    value("--coil", K::Coil, "NAME[+NAME...]",
+          "a coil of the case's set (default its first); a+b+c: the session's coils, each next one going in once the "
+          "one before has detached"),
     value("--input", K::JsonFile, "TIMELINE", "play these timed commands (coilsim-timeline/1)"),
     value("--replay", K::JsonFile, "SESSION", "replay a recorded session (coilsim-session/1)"),
     flag("--window", "practise by hand in the window; recorded and scored when it closes"),

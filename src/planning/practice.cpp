@@ -18,6 +18,19 @@ using nlohmann::ordered_json;
 
 namespace coilsim::planning {
 
+namespace {
+
+// THE HOOK where practice switches sleeping on for the coils left in the sac
+// (issue 16): a placed coil at rest is to sleep, frozen and not detected
+// again, once RodState carries the "sleeping" flag (branch h-sleep). Until
+// that is merged it does nothing: placed coils stay awake and are detected
+// every step, which is what `coilsim bench --practice` measures. The flag a
+// placed coil had when it was left comes back with it already
+// (restorePlacedRods copies the RodState whole).
+void letPlacedCoilsSleep(State& /*state*/, size_t /*firstPlaced*/) {}
+
+}  // namespace
+
 CoilSequence::CoilSequence(const PracticeCase& pc, const std::string& first) : case_(&pc) { build(first, nullptr); }
 
 void CoilSequence::build(const std::string& coilName, const State* before) {
@@ -49,11 +62,9 @@ void CoilSequence::build(const std::string& coilName, const State* before) {
   } catch (const std::exception& e) {
     throw io::InputError(pc.file + ": /scene: " + e.what());
   }
-  // Hook for issue 16's sleeping coils (branch h-sleep): a placed coil at
-  // rest is to sleep (frozen, not detected again); switch that on here for
-  // the rods from firstPlaced_ on once RodState carries the flag.
   State start = makeState(model);
   restorePlacedRods(start, firstPlaced_, placed_);
+  letPlacedCoilsSleep(start, firstPlaced_);
   setDrawnCatheterActive(*model.device, start, false);
   if (before) {
     // One session: its clock and records go on.
