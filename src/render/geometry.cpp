@@ -213,10 +213,11 @@ void appendSphere(const Vec3& centre, double radius, const Colour& colour, Trian
   fan(out, north, prev, slices, true);
 }
 
-void appendArrow(const Vec3& from, const Vec3& vector, double radius, const Colour& colour, TriangleMesh& out) {
+void appendArrow(const Vec3& from, const Vec3& vector, double radius, const Colour& colour, TriangleMesh& out,
+                 int sides) {
   const double len = vector.norm();
   if (!from.allFinite() || !(len > 0) || !std::isfinite(len) || !(radius > 0)) return;
-  const int sides = 10;
+  sides = std::max(sides, 3);
   const Vec3 t = vector / len, nn = anyPerpendicular(t), b = t.cross(nn);
   const double head = std::min(0.25 * len, 6.0 * radius), headR = std::min(3.0 * radius, 0.5 * head);
   const double shaftR = std::min(radius, headR / 1.5);  // short arrows: keep the head wider than the shaft

@@ -64,7 +64,8 @@ void appendSphere(const Vec3& centre, double radius, const Colour& colour, Trian
 
 // A closed arrow from `from` along `vector`: a shaft of radius `radius` and a
 // cone head three radii wide, a quarter of the length (at most).
-void appendArrow(const Vec3& from, const Vec3& vector, double radius, const Colour& colour, TriangleMesh& out);
+void appendArrow(const Vec3& from, const Vec3& vector, double radius, const Colour& colour, TriangleMesh& out,
+                 int sides = 10);
 
 // Appends a draw mesh with area-weighted vertex normals.
 void appendMesh(const DrawMesh& mesh, TriangleMesh& out);

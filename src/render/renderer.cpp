@@ -177,9 +177,22 @@ void Renderer::Impl::uploadGeometry(const DrawData& data, const RenderSettings& 
       for (const DrawTube& t : data.tubes) radius = std::max(radius, 1.6 * t.radius);
       if (!(radius > 0)) radius = 0.01 * std::max(boundsOf(data).radius(), 1e-6);
     }
+    // Markers as fine as their size on screen needs (a dense packing has
+    // hundreds): the sides tubeDetail gives a tube of their radius.
+    int slices = 10, arrowSides = 10;
+    if (s.tubeDetailBySize && scale) {
+      DrawTube at;
+      at.radius = radius;
+      for (const DrawPoint& p : data.points) at.centre.push_back(p.position);
+      const double perMetre = scale(at);
+      if (perMetre > 0) {
+        slices = tubeDetail(TubeOptions{10, 1, 1.0, 0}, perMetre * radius, 0).sides;
+        arrowSides = tubeDetail(TubeOptions{10, 1, 1.0, 0}, perMetre * 0.35 * radius, 0).sides;
+      }
+    }
     for (const DrawPoint& p : data.points) {
-      appendSphere(p.position, radius, p.colour, scratch);
-      appendArrow(p.position, p.vector, 0.35 * radius, p.colour, scratch);
+      appendSphere(p.position, radius, p.colour, scratch, slices, std::max(3, (slices + 1) / 2));
+      appendArrow(p.position, p.vector, 0.35 * radius, p.colour, scratch, arrowSides);
     }
   }
   points.upload(scratch);
