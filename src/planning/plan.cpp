@@ -139,6 +139,15 @@ CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const W
         s.beams = p.beams, s.nodes = p.nodes, s.x = p.x, s.q = p.q;
         std::fill(s.v.begin(), s.v.end(), Vec3::Zero());
         std::fill(s.w.begin(), s.w.end(), Vec3::Zero());
+        // A sleeping coil stays asleep, with the wall and self contacts it
+        // fell asleep with (physics/sleep.h); its self contacts name it by
+        // its index in this model. Its pairs with other rods are found anew.
+        s.asleep = p.asleep, s.stillTime = p.stillTime;
+        if (p.asleep) {
+          s.contact = p.contact;
+          s.contact.rod.clear();
+          for (ContactPoint& c : s.contact.self) c.other = int(firstPlaced + i);
+        }
       }
       chainRod = d.chainRod, catheterNodes = d.tipNode;
       setDrawnCatheterActive(d, r.state, false);
