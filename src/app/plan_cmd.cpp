@@ -61,7 +61,11 @@ struct PlanArgs {
   int width = 960, height = 720;
   std::optional<double> speedMmS, thresholdMn, spacingMm, maxTime;
   std::optional<std::pair<double, double>> sensitivity;
-  std::string sleep = "auto";  // placed coils at rest sleep (physics/sleep.h): on, off, auto (on for sequences)
+  // Placed coils at rest sleep (physics/sleep.h): on, off, auto (on for
+  // sequences), or "" (not given): as the scene says, off unless it has a
+  // "sleep" block that switches it on. Not on by default until it is shown
+  // to pay in a plan (docs/contact.md, "Sleeping coils").
+  std::string sleep;
 };
 
 // Parses plan's arguments; returns an error message or "".
@@ -193,11 +197,11 @@ int plan(const PlanArgs& a) {
     return usage(a.input + ": " + e.what());
   }
   // Placed coils at rest sleep (physics/sleep.h, docs/contact.md "Sleeping
-  // coils"): by default in sequences, where they pay; a scene's own "sleep"
-  // thresholds stay. Single coils stay as they were without it.
+  // coils") when asked; auto: in sequences only. A scene's own "sleep"
+  // thresholds stay. Off, a plan is as it was without sleeping.
   bool sequence = false;
   for (const std::vector<io::CoilSpec>& c : chosen) sequence = sequence || c.size() > 1;
-  if (a.sleep != "auto" || sequence) setup.scene.sleep = a.sleep == "on" || (a.sleep == "auto" && sequence);
+  if (!a.sleep.empty()) setup.scene.sleep = a.sleep == "on" || (a.sleep == "auto" && sequence);
   std::vector<Candidate> candidates;
   for (const std::vector<io::CoilSpec>& c : chosen) {
     if (a.sensitivity) {
