@@ -36,6 +36,76 @@ bool isContact(const EffectUse& u) {
   return u.name() == "wall_contact" || u.name() == "self_contact" || u.name() == "rod_contact";
 }
 
+// One sleeping-coil case (physics/sleep.h): `asleepMm` of coil at rest in
+// the outer shells, asleep, and the about 100 mm of the inner shells awake,
+// sliding along themselves at the push speed (5 mm/s) as a coil being
+// pushed in does, against all of it awake, in the same run. Returns the
+// thread CPU time per step (us) of each and the wakes seen.
+struct SleepingCase {
+  double awakeUs = 0, asleepUs = 0;
+  int rodsAsleep = 0;
+  double mmAsleep = 0, mmAwake = 0;
+  long wakes = 0;
+  bool ok = true;
+};
+
+SleepingCase benchSleeping(int asleepMm, int steps) {
+  SleepingCase c;
+  // The sleeping coil: asleepMm in shells from the wall inwards; the awake
+  // one: 100 mm in shells laid on from the innermost of those inwards (a
+  // sac of its own, whose wall is left out), one shell pitch further in.
+  ModelDef def = planning::denseSacModel(units::mmToM(asleepMm));
+  const size_t outerRods = def.rods.size();
+  const planning::DenseSacSpec spec;
+  double innermost = INFINITY;
+  for (const RodModel& r : compileModel(def).rods)
+    for (const Vec3& p : r.restPoints) innermost = std::min(innermost, p.norm());
+  planning::DenseSacSpec inner = spec;
+  inner.sacRadius = innermost - (2 * spec.wireRadius + spec.gap) + 1.1 * spec.wireRadius;
+  for (RodDef& r : planning::denseSacModel(units::mmToM(100), inner).rods) {
+    r.name = "awake " + r.name;
+    def.rods.push_back(std::move(r));
+  }
+  def.sleep.enabled = true;
+  const Model model = compileModel(def);
+  State start = makeState(model);
+  std::vector<bool> sleeps(model.rods.size(), false);
+  for (size_t k = 0; k < model.rods.size(); ++k) {
+    double length = 0;
+    for (const BeamRest& b : model.rods[k].beams) length += b.length;
+    sleeps[k] = k < outerRods;
+    (sleeps[k] ? c.mmAsleep : c.mmAwake) += units::mToMm(length);
+  }
+  // One step awake first, so that the sleeping shells keep contacts found
+  // where they lie (what a rod falling asleep keeps).
+  c.ok = step(model, start).ok();
+  constexpr double kPush = 5e-3;  // m/s
+  for (size_t k = 0; k < model.rods.size(); ++k) {
+    RodState& r = start.rods[k];
+    for (int i = 0; i < r.activeNodes; ++i) {
+      const Vec3 along = r.x[std::min(i + 1, r.activeNodes - 1)] - r.x[std::max(i - 1, 0)];
+      r.v[i] = sleeps[k] ? Vec3::Zero() : Vec3(kPush * along.normalized());
+      r.w[i].setZero();
+    }
+  }
+  State awake = start, asleep = start;
+  for (size_t k = 0; k < model.rods.size(); ++k) asleep.rods[k].asleep = sleeps[k];
+  c.rodsAsleep = int(std::count(sleeps.begin(), sleeps.end(), true));
+  Model awakeModel = model;
+  awakeModel.sleep.enabled = false;
+  for (int i = 0; i < steps; ++i) {
+    double t0 = cpuMicroseconds();
+    c.ok = step(awakeModel, awake).ok() && c.ok;
+    c.awakeUs += cpuMicroseconds() - t0;
+    t0 = cpuMicroseconds();
+    c.ok = step(model, asleep).ok() && c.ok;
+    c.asleepUs += cpuMicroseconds() - t0;
+  }
+  c.awakeUs /= steps, c.asleepUs /= steps;
+  c.wakes = asleep.sleep.wakes;
+  return c;
+}
+
 }  // namespace
 
 void benchDenseFigures(const std::function<void(const std::string&, double)>& set, bool quick, bool json) {
@@ -100,6 +170,23 @@ void benchDenseFigures(const std::function<void(const std::string&, double)>& se
                   stepUs / steps, detectUs / steps, freshUs / steps, wall1Us / steps, wall2Us / steps,
                   double(contacts) / steps / segments, stepUs / steps / segments,
                   ok ? "" : "  (a step was refused)");
+  }
+  // Sleeping coils: what a coil at rest costs once it sleeps.
+  const std::vector<int> asleepLengths = quick ? std::vector<int>{250} : std::vector<int>{250, 500, 1000};
+  if (!json)
+    std::printf("dense packing with sleeping coils (physics/sleep.h): N mm asleep (outer shells) + about 100 mm awake "
+                "(inner shells sliding along themselves at 5 mm/s), thread CPU time per step, against the same all "
+                "awake:\n  %10s %10s %10s %12s %12s %8s %6s\n",
+                "asleep_mm", "awake_mm", "rods_asleep", "awake_us", "asleep_us", "ratio", "wakes");
+  for (int mm : asleepLengths) {
+    const SleepingCase c = benchSleeping(mm, quick ? 5 : 20);
+    const std::string k = "_" + std::to_string(mm) + "mm";
+    set("dense_sleeping_all_awake_step_us" + k, c.awakeUs);
+    set("dense_sleeping_step_us" + k, c.asleepUs);
+    set("dense_sleeping_run_ok" + k, c.ok ? 1.0 : 0.0);
+    if (!json)
+      std::printf("  %10.0f %10.0f %10d %12.0f %12.0f %8.2f %6ld%s\n", c.mmAsleep, c.mmAwake, c.rodsAsleep, c.awakeUs,
+                  c.asleepUs, c.asleepUs > 0 ? c.awakeUs / c.asleepUs : 0.0, c.wakes, c.ok ? "" : "  (a step was refused)");
   }
 }
 

@@ -98,6 +98,7 @@ constexpr std::array kPlan{
     number("--max-time", "S", "simulated seconds before a coil is given up", 0, kNoBound, true),
     value("--sensitivity", K::Text, "SHIFT_MM,TILT_DEG",
           "also run each coil with the catheter tip shifted and tilted (e.g. 0.5,5)"),
+    choice("--sleep", "MODE", "placed coils at rest sleep: on, off or auto (on for sequences); default: as the scene says (off)", "on|off|auto"),
     flag("--no-screenshots", "no pictures"),
     size("--size", "WxH", "picture size in pixels (default 960x720)", 16, 8192),
     kQuiet,

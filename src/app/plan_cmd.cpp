@@ -18,6 +18,7 @@
 #include "io/json_writer.h"
 #include "io/units.h"
 #include "planning/case_file.h"
+#include "physics/sleep.h"
 #include "planning/plan.h"
 
 namespace coilsim::app {
@@ -32,7 +33,7 @@ int usage(const std::string& message) {
                "coilsim plan: %s\n"
                "usage: coilsim plan SCENE|CASE... --out DIR [--coils a,b+c] [--jobs N] [--sac FILE] [--catalogue DIR]\n"
                "         [--speed MM_S] [--force-threshold MN] [--spacing MM] [--max-time S]\n"
-               "         [--sensitivity SHIFT_MM,TILT_DEG] [--no-screenshots] [--size WxH]\n"
+               "         [--sensitivity SHIFT_MM,TILT_DEG] [--sleep on|off|auto] [--no-screenshots] [--size WxH]\n"
                "       coilsim plan-merge DIR... --out DIR\n"
                "(docs/planning.md)\n",
                message.c_str());
@@ -60,6 +61,11 @@ struct PlanArgs {
   int width = 960, height = 720;
   std::optional<double> speedMmS, thresholdMn, spacingMm, maxTime;
   std::optional<std::pair<double, double>> sensitivity;
+  // Placed coils at rest sleep (physics/sleep.h): on, off, auto (on for
+  // sequences), or "" (not given): as the scene says, off unless it has a
+  // "sleep" block that switches it on. Not on by default until it is shown
+  // to pay in a plan (docs/contact.md, "Sleeping coils").
+  std::string sleep;
 };
 
 // Parses plan's arguments; returns an error message or "".
@@ -112,6 +118,10 @@ std::string parseArgs(const std::vector<std::string>& args, PlanArgs& a) {
         return "--sensitivity needs SHIFT_MM,TILT_DEG (shift in [0, 5] mm, tilt in [0, 45] deg, not both 0), e.g. "
                "0.5,5; got \"" + v + "\"";
       a.sensitivity = std::make_pair(s, t);
+    } else if (arg == "--sleep") {
+      if (!value(v) || (v != "on" && v != "off" && v != "auto"))
+        return "--sleep needs on, off or auto (on for sequences of coils), got \"" + v + "\"";
+      a.sleep = v;
     } else if (arg == "--no-screenshots") {
       a.screenshots = false;
     } else if (arg == "--size") {
@@ -186,6 +196,12 @@ int plan(const PlanArgs& a) {
   } catch (const std::exception& e) {
     return usage(a.input + ": " + e.what());
   }
+  // Placed coils at rest sleep (physics/sleep.h, docs/contact.md "Sleeping
+  // coils") when asked; auto: in sequences only. A scene's own "sleep"
+  // thresholds stay. Off, a plan is as it was without sleeping.
+  bool sequence = false;
+  for (const std::vector<io::CoilSpec>& c : chosen) sequence = sequence || c.size() > 1;
+  if (!a.sleep.empty()) setup.scene.sleep = a.sleep == "on" || (a.sleep == "auto" && sequence);
   std::vector<Candidate> candidates;
   for (const std::vector<io::CoilSpec>& c : chosen) {
     if (a.sensitivity) {
@@ -204,6 +220,13 @@ int plan(const PlanArgs& a) {
   if (stopRequested())  // what ran is written below; the exit code says it is not all
     std::fprintf(stderr, "coilsim plan: %s: %zu of %zu run(s) finished, written\n", stopReason(), results.size(),
                  candidates.size());
+  // What sleeping did, for whoever weighs its cost (docs/contact.md, "Sleeping coils").
+  if (setup.scene.sleep)
+    for (const CandidateResult& r : results)
+      std::fprintf(stderr,
+                   "coilsim plan: %s (%s): sleeping on: %d rod(s) asleep at the end; the last coil's run put %ld to "
+                   "sleep and woke %ld\n",
+                   r.name.c_str(), r.variant.c_str(), sleepingRods(r.state), r.state.sleep.sleeps, r.state.sleep.wakes);
   nlohmann::ordered_json pj = planning::planJson(setup, results);
   bool allOk = true;
   for (size_t i = 0; i < results.size(); ++i) {

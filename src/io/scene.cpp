@@ -221,6 +221,17 @@ ModelDef compileScene(const SceneSpec& s) {
   def.timeStep = s.solve == SolveMode::Dynamic ? s.timeStepS : 1e-3;  // unused by static solves
   def.newtonIterations = s.newtonIterations;
   def.damping = {s.rayleighMass, s.rayleighStiffness};
+  def.sleep.enabled = s.sleep;  // the default thresholds unless the scene gives its own
+  if (!s.sleepValues.empty()) {
+    std::vector<double> si;
+    for (size_t i = 0; i < s.sleepValues.size() && i < std::size(kSleepParams); ++i)
+      si.push_back(s.sleepValues[i] * kSleepParams[i].toSI);
+    try {
+      def.sleep = sleepSettings(s.sleep, si);
+    } catch (const std::exception& ex) {
+      fail(s, "/sleep", ex.what());
+    }
+  }
   for (const EffectSpec& e : s.effects) {
     EffectUse use;
     try {

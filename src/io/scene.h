@@ -146,6 +146,10 @@ struct SceneSpec {
   int loadSteps = 10;
   int maxNewtonIterations = 60;
   std::vector<EffectSpec> effects;
+  // "sleep": {"enabled": bool, and physics/sleep.h's kSleepParams}: off
+  // unless a scene asks; values in their edge units, one per kSleepParams.
+  bool sleep = false;
+  std::vector<double> sleepValues;
   std::vector<RodSpecMm> rods;
   std::optional<DeploymentSpec> deployment;  // rods of the deployment come after `rods`
   std::vector<ObstacleSpec> obstacles;       // walls (scene_obstacles.h)

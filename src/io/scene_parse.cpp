@@ -249,7 +249,8 @@ SceneSpec parseScene(const nlohmann::json& document, const std::string& file) {
   const JsonNode root(document, file);
   if (!root.isObject()) root.expected("a JSON object (a coilsim scene)");
   root.allowKeys({"format", "name", "description", "gravity_m_s2", "solve", "time_step_s", "duration_s",
-                  "newton_iterations", "damping", "load_steps", "max_newton_iterations", "effects", "rods", "deployment", "obstacles"});
+                  "newton_iterations", "damping", "sleep", "load_steps", "max_newton_iterations", "effects", "rods",
+                  "deployment", "obstacles"});
   root.child("format").oneOf({kSceneFormat});
   SceneSpec s;
   s.file = file;
@@ -273,13 +274,24 @@ SceneSpec parseScene(const nlohmann::json& document, const std::string& file) {
     if (auto a = d->optional("rayleigh_mass_1_s")) s.rayleighMass = a->number(kNonNegative);
     if (auto b = d->optional("rayleigh_stiffness_s")) s.rayleighStiffness = b->number(kNonNegative);
   }
+  // Sleeping rods (physics/sleep.h): the keys and bounds are kSleepParams'.
+  for (const ParamSpec& p : kSleepParams) s.sleepValues.push_back(p.defaultValue);
+  if (auto z = root.optional("sleep")) {
+    std::vector<std::string_view> allowed{"enabled"};
+    for (const ParamSpec& p : kSleepParams) allowed.push_back(p.name);
+    z->allowKeys(allowed);
+    if (auto en = z->optional("enabled")) s.sleep = en->boolean();
+    for (size_t i = 0; i < std::size(kSleepParams); ++i)
+      if (auto v = z->optional(kSleepParams[i].name))
+        s.sleepValues[i] = v->number(Bounds::closed(kSleepParams[i].min, kSleepParams[i].max, kSleepParams[i].unit));
+  }
   if (auto l = root.optional("load_steps")) s.loadSteps = int(l->integer(1, 100'000));
   if (auto m = root.optional("max_newton_iterations")) s.maxNewtonIterations = int(m->integer(1, 10'000));
   if (dynamic) {
     unused("load_steps");
     unused("max_newton_iterations");
   } else {
-    for (const char* key : {"time_step_s", "duration_s", "newton_iterations", "damping"}) unused(key);
+    for (const char* key : {"time_step_s", "duration_s", "newton_iterations", "damping", "sleep"}) unused(key);
   }
 
   if (auto effects = root.optional("effects")) {

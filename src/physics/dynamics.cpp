@@ -3,6 +3,7 @@
 
 #include "physics/assembly.h"
 #include "physics/integrator.h"
+#include "physics/sleep.h"
 
 namespace coilsim {
 namespace {
@@ -155,7 +156,7 @@ StepReport attempt(const Model& model, State& state, double h, bool detect, bool
       if (u.enabled) u.effect->beginStep(model, u.values, state, h);
   StepReport report;
   for (size_t k = 0; k < model.rods.size() && report.ok(); ++k)
-    if (state.rods[k].active) report = stepRod(model, int(k), state.rods[k], state.time, h, iterations);
+    if (state.rods[k].active && !state.rods[k].asleep) report = stepRod(model, int(k), state.rods[k], state.time, h, iterations);
   if (report.ok()) report.failure = checkHealth(model, state);
   for (size_t k = 0; k < model.effects.size() && verify && report.ok(); ++k)
     if (model.effects[k].enabled)
@@ -277,6 +278,7 @@ StepReport step(const Model& model, State& state) {
   if (report.ok()) state.time += model.timeStep;
   recordWallPenetration(model, state);
   if (report.ok()) recordWallLoad(model, state);
+  if (report.ok()) updateSleep(model, state);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   StepStats& s = state.stats;
   ++s.steps;

@@ -101,6 +101,10 @@ Model compileModel(const ModelDef& def) {
   for (const RodDef& r : def.rods) m.rods.push_back(compileRod(r));
   m.gravity = def.gravity;
   m.damping = def.damping;
+  if (!std::isfinite(def.sleep.speed + def.sleep.time + def.sleep.wakeForce) || !(def.sleep.speed >= 0) ||
+      !(def.sleep.time >= 0) || !(def.sleep.wakeForce >= 0))
+    throw PhysicsError(badDefinition({}, "sleep thresholds must be finite and >= 0"));
+  m.sleep = def.sleep;
   m.timeStep = def.timeStep;
   m.newtonIterations = def.newtonIterations;
   m.health = def.health;

@@ -15,6 +15,7 @@
 #include "physics/math.h"
 #include "physics/rest_shape.h"
 #include "physics/section.h"
+#include "physics/sleep.h"
 #include "physics/triangle_mesh.h"
 
 namespace coilsim {
@@ -92,6 +93,7 @@ struct ModelDef {
   HealthLimits health;
   std::vector<EffectUse> effects;    // gravity is one of them
   std::vector<Obstacle> obstacles;   // walls the rods may touch (contact effects read them)
+  SleepSettings sleep;               // off unless asked for (physics/sleep.h)
   // A coil deployed through a catheter: compileModel appends its rods (the
   // chain, the detached coil, the drawn catheter) after `rods`.
   std::optional<DeploymentDef> device;
@@ -106,6 +108,7 @@ struct Model {
   HealthLimits health;
   std::vector<EffectUse> effects;
   std::vector<Obstacle> obstacles;
+  SleepSettings sleep;
   std::vector<std::shared_ptr<const ObstacleTree>> obstacleTrees;  // (obstacles) collision trees, built by compileModel
   std::optional<Deployment> device;  // the deployment's constants, when the run has one
 };

@@ -57,6 +57,16 @@ struct RodState {
   std::vector<Pose> targets;  // (constraints) where each constraint holds its node
   RodContacts contact;        // contacts found this step and contact forces per node
   RodWorkspace work;
+  // Sleeping (physics/sleep.h): frozen, not integrated, its wall and self
+  // contacts kept from before; stillTime: how long it has been still (s).
+  bool asleep = false;
+  double stillTime = 0;
+};
+
+// What the sleep rule remembers across steps (physics/sleep.h).
+struct SleepRecord {
+  std::vector<double> seen;  // the model's effects, gravity, damping and time step at the last step
+  long sleeps = 0, wakes = 0;  // rods put to sleep and woken so far
 };
 
 struct StepStats {
@@ -81,6 +91,7 @@ struct State {
   long blowups = 0;                   // steps refused because the result was not healthy
   long substepped = 0;                // steps that were healthy only in substeps (dynamics.cpp)
   std::vector<std::string> warnings;  // each reported once
+  SleepRecord sleep;
   // Contact detection's scratch; mutable because the end-of-step checks and
   // the static update limits query the wall from a const State.
   mutable ContactScratch contactScratch;

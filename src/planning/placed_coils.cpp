@@ -23,6 +23,11 @@ void restorePlacedRods(State& state, size_t first, const std::vector<PlacedCoil>
     s = placed[i].pose;
     std::fill(s.v.begin(), s.v.end(), Vec3::Zero());
     std::fill(s.w.begin(), s.w.end(), Vec3::Zero());
+    // Its self contacts name it by its index in this model; its pairs with
+    // other rods named theirs in the last one, and are found anew. A
+    // sleeping coil keeps its wall and self contacts (physics/sleep.h).
+    for (ContactPoint& c : s.contact.self) c.other = int(first + i);
+    s.contact.rod.clear();
   }
 }
 

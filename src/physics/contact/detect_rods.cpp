@@ -24,6 +24,11 @@ long cellIndex(double v) { return std::lround(std::floor(std::clamp(v, -1e6, 1e6
 
 bool takesPart(const RodState& r) { return r.active && r.activeNodes >= 2; }
 
+// Whether r is searched for pairs: a sleeping rod is not for its own
+// (self-contact: its last contacts are kept), only against awake rods
+// (physics/sleep.h).
+bool inSearch(const RodState& r, bool sameRod) { return takesPart(r) && !(sameRod && r.asleep); }
+
 // Half the segment's length plus its larger node radius, and what it sweeps in `sweep` s at its start velocity.
 double segmentSize(const RodState& r, int e) {
   return 0.5 * (r.x[e + 1] - r.x[e]).norm() + std::max(r.nodes[e].radius, r.nodes[e + 1].radius);
@@ -60,13 +65,13 @@ void forEachNearPair(const Model& model, const State& state, bool sameRod, doubl
   double size = 0;
   for (size_t k = 0; k < state.rods.size(); ++k) {
     const RodState& r = state.rods[k];
-    if (!takesPart(r)) continue;
+    if (!inSearch(r, sameRod)) continue;
     for (int e = 0; e + 1 < r.activeNodes; ++e) size = std::max(size, segmentSize(r, e));
   }
   double reach = size;
   for (size_t k = 0; k < state.rods.size(); ++k) {
     const RodState& r = state.rods[k];
-    if (!takesPart(r)) continue;
+    if (!inSearch(r, sameRod)) continue;
     for (int e = 0; e + 1 < r.activeNodes; ++e) {
       const double swept = segmentSweep(r, e, sweep);
       if (swept > 0.25 * size) fast.push_back({0, int(k), e});  // in (rod, segment) order
@@ -94,7 +99,7 @@ void forEachNearPair(const Model& model, const State& state, bool sameRod, doubl
     const double reachF = segmentSize(rf, f.segment) + segmentSweep(rf, f.segment, sweep);
     for (size_t k = 0; k < state.rods.size(); ++k) {
       const RodState& r = state.rods[k];
-      if (!takesPart(r) || (sameRod && int(k) != f.rod) || (!sameRod && int(k) == f.rod)) continue;
+      if (!inSearch(r, sameRod) || (sameRod && int(k) != f.rod) || (!sameRod && int(k) == f.rod)) continue;
       for (int e = 0; e + 1 < r.activeNodes; ++e) {
         if (int(k) == f.rod && e == f.segment) continue;
         // A fast pair is met from its first segment only.
@@ -107,7 +112,7 @@ void forEachNearPair(const Model& model, const State& state, bool sameRod, doubl
   }
   for (size_t k = 0; k < state.rods.size(); ++k) {
     const RodState& r = state.rods[k];
-    if (!takesPart(r)) continue;
+    if (!inSearch(r, sameRod)) continue;
     for (int e = 0; e + 1 < r.activeNodes; ++e) {
       if (!fast.empty() && isFast(int(k), e)) continue;
       const Vec3 mid = 0.5 * (r.x[e] + r.x[e + 1]), m = mid / cell;
@@ -158,6 +163,7 @@ void forEachNearPair(const Model& model, const State& state, bool sameRod, doubl
           near[c] = sameRod ? std::equal_range(cells[c].first, cells[c].second, key, byRod)
                             : Range{std::upper_bound(cells[c].first, cells[c].second, key, byRod), cells[c].second};
         const bool catheter = model.rods[group->rod].role == RodRole::Catheter;
+        const bool asleep = state.rods[group->rod].asleep;
         for (Iterator gIt = group; gIt != groupEnd; ++gIt) {
           const GridSegment& gi = *gIt;
           for (const Range& range : near)
@@ -166,6 +172,8 @@ void forEachNearPair(const Model& model, const State& state, bool sameRod, doubl
               // Each pair once, i before j; in one rod, not neighbours.
               if (sameRod && gj.segment - gi.segment <= 1) continue;
               if (catheter && model.rods[gj.rod].role == RodRole::Catheter) continue;
+              // Two sleeping rods do not move: nothing between them changes.
+              if (asleep && state.rods[gj.rod].asleep) continue;
               const double apart = gi.extent + gj.extent + margin;
               if ((gj.mid - gi.mid).squaredNorm() > apart * apart) continue;
               visit(part, gi.rod, gi.segment, gj.rod, gj.segment);
@@ -201,6 +209,7 @@ void detectRodContacts(const Model& model, State& state, double h, bool sameRod,
   std::vector<std::vector<ContactPoint>>& previous = state.contactScratch.previous;
   previous.resize(state.rods.size());
   for (size_t k = 0; k < state.rods.size(); ++k) {
+    if (sameRod && state.rods[k].asleep) continue;  // keeps its self contacts (physics/sleep.h)
     std::vector<ContactPoint>& list = sameRod ? state.rods[k].contact.self : state.rods[k].contact.rod;
     std::swap(previous[k], list);
     list.clear();
@@ -208,7 +217,8 @@ void detectRodContacts(const Model& model, State& state, double h, bool sameRod,
   // No contact distance, no contacts: not even a closing pair's barrier,
   // which would stop centre lines from crossing.
   if (!(law.radiusScale > 0)) {
-    for (RodState& r : state.rods) (sameRod ? r.contact.selfForce : r.contact.rodForce).assign(r.x.size(), 0.0);
+    for (RodState& r : state.rods)
+      if (!(sameRod && r.asleep)) (sameRod ? r.contact.selfForce : r.contact.rodForce).assign(r.x.size(), 0.0);
     return;
   }
   // Between rods, a pair needs two rods taking part (a plan's first coil is alone in its sac).
@@ -282,6 +292,7 @@ void detectRodContacts(const Model& model, State& state, double h, bool sameRod,
     for (const FoundPair& f : part.pairs) add(f.ki, f.si, f.kj, f.sj, f.p);
   for (size_t k = 0; k < state.rods.size(); ++k) {
     RodState& r = state.rods[k];
+    if (sameRod && r.asleep) continue;
     std::vector<ContactPoint>& list = sameRod ? r.contact.self : r.contact.rod;
     // A total order, so that the order pairs were found in does not matter
     // (two other rods can touch one segment at equal segment indices).
@@ -352,7 +363,7 @@ std::optional<Failure> checkRodContacts(const Model& model, const State& state, 
   } else {
     // Only the pairs found at the start but not touching nor closing can have been missed.
     for (size_t k = 0; k < state.rods.size(); ++k) {
-      if (!takesPart(state.rods[k])) continue;
+      if (!inSearch(state.rods[k], sameRod)) continue;
       for (const ContactPoint& c : sameRod ? state.rods[k].contact.self : state.rods[k].contact.rod)
         if (int(k) < c.other || (int(k) == c.other && c.segment < c.otherSegment))
           if (takesPart(state.rods[c.other]) && c.otherSegment + 1 < state.rods[c.other].activeNodes)

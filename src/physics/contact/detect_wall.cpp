@@ -275,6 +275,8 @@ void detectWallContacts(const Model& model, State& state, double h, double margi
     RodState& r = state.rods[k];
     laws[k].stiffness = wallStiffness(wallLaw.stiffness, rigidityScale, model.rods[k]);
     RodContacts& rc = r.contact;
+    // A sleeping rod keeps its last contacts and forces (physics/sleep.h).
+    if (r.asleep) continue;
     std::swap(rc.wall, rc.previous);
     rc.wall.clear();
     if (!r.active || model.rods[k].role == RodRole::Catheter) continue;
@@ -302,7 +304,7 @@ void detectWallContacts(const Model& model, State& state, double h, double margi
     const int from = part ? half : 0, to = part ? segments : half;
     for (size_t k = 0; k < rods && index < to; ++k) {
       RodState& r = state.rods[k];
-      if (!r.active || model.rods[k].role == RodRole::Catheter) continue;
+      if (!r.active || r.asleep || model.rods[k].role == RodRole::Catheter) continue;
       const int n = std::max(0, r.activeNodes - 1);
       std::vector<ContactPoint>& out = split ? found[k] : r.contact.wall;
       if (split) out.clear();
@@ -314,6 +316,7 @@ void detectWallContacts(const Model& model, State& state, double h, double margi
   for (size_t k = 0; k < rods; ++k) {
     RodState& r = state.rods[k];
     RodContacts& rc = r.contact;
+    if (r.asleep) continue;
     if (split && r.active && model.rods[k].role != RodRole::Catheter) {
       std::swap(rc.wall, scratch.parts[0].wall[k]);
       const std::vector<ContactPoint>& second = scratch.parts[1].wall[k];
@@ -336,7 +339,8 @@ std::optional<Failure> checkWallContacts(const Model& model, const State& state,
   double worst = 0;
   for (size_t k = 0; k < state.rods.size(); ++k) {
     const RodState& r = state.rods[k];
-    if (!r.active || model.rods[k].role == RodRole::Catheter || r.work.x0.size() < size_t(r.activeNodes)) continue;
+    if (!r.active || r.asleep || model.rods[k].role == RodRole::Catheter || r.work.x0.size() < size_t(r.activeNodes))
+      continue;  // (a sleeping rod has not moved)
     const std::vector<ContactPoint>& list = r.contact.wall;
     for (int e = 0; e + 1 < r.activeNodes; ++e) {
       const Vec3 &a = r.x[e], &b = r.x[e + 1];
