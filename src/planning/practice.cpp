@@ -12,6 +12,7 @@
 #include "physics/deployment.h"
 #include "physics/integrator.h"
 #include "planning/contact_forces.h"
+#include "physics/sleep.h"
 #include "planning/run_contacts.h"
 
 using nlohmann::ordered_json;
@@ -20,14 +21,14 @@ namespace coilsim::planning {
 
 namespace {
 
-// THE HOOK where practice switches sleeping on for the coils left in the sac
-// (issue 16): a placed coil at rest is to sleep, frozen and not detected
-// again, once RodState carries the "sleeping" flag (branch h-sleep). Until
-// that is merged it does nothing: placed coils stay awake and are detected
-// every step, which is what `coilsim bench --practice` measures. The flag a
-// placed coil had when it was left comes back with it already
-// (restorePlacedRods copies the RodState whole).
-void letPlacedCoilsSleep(State& /*state*/, size_t /*firstPlaced*/) {}
+// Coils left in the sac may sleep (physics/sleep.h) while the next goes
+// in: at rest they are frozen and not detected again until the new coil
+// presses them. A session of one coil has none and runs as before. The flag
+// a placed coil had when it was left comes back with it (restorePlacedRods
+// copies the RodState whole).
+void letPlacedCoilsSleep(Model& model, bool anyPlaced) {
+  if (anyPlaced) setSleeping(model, true);
+}
 
 }  // namespace
 
@@ -57,6 +58,7 @@ void CoilSequence::build(const std::string& coilName, const State* before) {
     addRunContacts(def, pc.sac);
     model = compileModel(def);
     model.device = d;
+    letPlacedCoilsSleep(model, !placed_.empty());
   } catch (const io::InputError&) {
     throw;
   } catch (const std::exception& e) {
@@ -64,7 +66,6 @@ void CoilSequence::build(const std::string& coilName, const State* before) {
   }
   State start = makeState(model);
   restorePlacedRods(start, firstPlaced_, placed_);
-  letPlacedCoilsSleep(start, firstPlaced_);
   setDrawnCatheterActive(*model.device, start, false);
   if (before) {
     // One session: its clock and records go on.
