@@ -31,8 +31,7 @@ int usage(const std::string& message) {
   std::fprintf(stderr,
                "coilsim plan: %s\n"
                "usage: coilsim plan SCENE|CASE... --out DIR [--coils a,b+c | --sequence NAME] [--jobs N] [--sac FILE]\n"
-               "         [--catalogue DIR]"
-               " [--speed MM_S] [--force-threshold MN] [--spacing MM] [--max-time S]\n"
+               "         [--catalogue DIR] [--speed MM_S] [--force-threshold MN] [--spacing MM] [--max-time S]\n"
                "         [--sensitivity SHIFT_MM,TILT_DEG] [--no-screenshots] [--size WxH]\n"
                "       coilsim plan-merge DIR... --out DIR\n"
                "(docs/planning.md)\n",
