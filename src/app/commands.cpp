@@ -88,7 +88,9 @@ constexpr std::array kPhantom{
 constexpr std::array kPlan{
     value("--out", K::Directory, "DIR", "write DIR/plan.json, DIR/plan.md and a picture per coil"),
     value("--coils", K::CoilList, "a,b+c",
-          "catalogue coils: a,b two candidates, b+c one sequence into the same sac (default: the case's coils)"),
+          "catalogue coils: a,b two candidates, b+c one sequence into the same sac (default: the case's first "
+          "sequence, else each coil of its set)"),
+    value("--sequence", K::Text, "NAME", "a case's sequence of coils (its \"sequences\"), deployed into one sac"),
     integer("--jobs", "N", "candidates run on N threads", 1, 256),
     value("--sac", K::JsonFile, "FILE", "the sac and neck plane of a scene ({\"sac\": {...}})"),
     value("--catalogue", K::Directory, "DIR", "a directory of coil files instead of the installed catalogue"),

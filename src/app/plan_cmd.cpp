@@ -31,8 +31,8 @@ using planning::PlanSetup;
 int usage(const std::string& message) {
   std::fprintf(stderr,
                "coilsim plan: %s\n"
-               "usage: coilsim plan SCENE|CASE... --out DIR [--coils a,b+c] [--jobs N] [--sac FILE] [--catalogue DIR]\n"
-               "         [--speed MM_S] [--force-threshold MN] [--spacing MM] [--max-time S]\n"
+               "usage: coilsim plan SCENE|CASE... --out DIR [--coils a,b+c | --sequence NAME] [--jobs N] [--sac FILE]\n"
+               "         [--catalogue DIR] [--speed MM_S] [--force-threshold MN] [--spacing MM] [--max-time S]\n"
                "         [--sensitivity SHIFT_MM,TILT_DEG] [--sleep on|off|auto] [--no-screenshots] [--size WxH]\n"
                "       coilsim plan-merge DIR... --out DIR\n"
                "(docs/planning.md)\n",
@@ -54,7 +54,7 @@ std::vector<std::string> split(const std::string& s, char sep) {
 }
 
 struct PlanArgs {
-  std::string input, out, sac, catalogue, coils;
+  std::string input, out, sac, catalogue, coils, sequence;
   std::vector<std::string> inputs;  // several cases: one plan each, in DIR/<case name>/
   int jobs = 1;
   bool screenshots = true;
@@ -92,6 +92,8 @@ std::string parseArgs(const std::vector<std::string>& args, PlanArgs& a) {
       if (!value(a.out) || a.out.empty()) return "--out needs a directory";
     } else if (arg == "--coils") {
       if (!value(a.coils) || split(a.coils, ',').empty()) return "--coils needs names, e.g. --coils framing-3d-5x100,filling-helical-4x80";
+    } else if (arg == "--sequence") {
+      if (!value(a.sequence) || a.sequence.empty()) return "--sequence needs the name of one of the case's \"sequences\"";
     } else if (arg == "--jobs") {
       double d = 0;
       if (!value(v) || !number(v, d) || d < 1 || d > 256 || d != std::floor(d)) return "--jobs needs an integer in [1, 256], got \"" + v + "\"";
@@ -139,6 +141,7 @@ std::string parseArgs(const std::vector<std::string>& args, PlanArgs& a) {
   }
   if (a.inputs.empty()) return "plan needs a scene or case file, e.g. coilsim plan scenes/cases/sphere-7mm-wide-neck.json";
   if (a.inputs.size() > 1 && !a.sac.empty()) return "--sac belongs to one scene: plan several case files, or one scene with --sac";
+  if (!a.sequence.empty() && !a.coils.empty()) return "give --coils or --sequence, not both";
   a.input = a.inputs.front();
   if (a.out.empty()) return "plan needs --out DIR";
   return "";
@@ -160,6 +163,7 @@ int plan(const PlanArgs& a) {
   PlanSetup setup;
   setup.label = a.input;
   std::vector<std::vector<io::CoilSpec>> chosen;  // each a coil or a sequence
+  std::string sequenceName;                        // the case's name of chosen's sequence, if it is one
   const nlohmann::json doc = io::readJsonFile(a.input);
   const bool isCase = doc.is_object() && doc.value("format", std::string()) == planning::kCaseFormat;
   const std::vector<io::CoilSpec> catalogue =
@@ -170,9 +174,17 @@ int plan(const PlanArgs& a) {
     setup.sac = a.sac.empty() ? c.sac : planning::loadSac(a.sac);
     setup.spacingMm = c.spacingMm;
     setup.deploy.wallForceThreshold = c.goal.maxWallForce;
-    if (a.coils.empty())
+    // No coils named: the sequence asked for, else the case's first, else each coil of its set.
+    if (!a.sequence.empty() || (a.coils.empty() && !c.sequences.empty())) {
+      const planning::CoilSequence& s =
+          a.sequence.empty() ? c.sequences.front() : planning::findSequence(c, a.sequence);
+      chosen.push_back(s.coils);
+      sequenceName = s.name;
+    } else if (a.coils.empty())
       for (const io::CoilSpec& coil : c.coils) chosen.push_back({coil});
   } else {
+    if (!a.sequence.empty())
+      return usage(a.input + " is a scene: --sequence names a sequence of a case file (its \"sequences\")");
     setup.scene = io::loadScene(a.input);
     if (!setup.scene.deployment)
       return usage(a.input + " has no \"deployment\" block: plan needs a catheter to deploy the coils from");
@@ -208,9 +220,10 @@ int plan(const PlanArgs& a) {
       for (Candidate& v : planning::sensitivityVariants(c, a.sensitivity->first, a.sensitivity->second))
         candidates.push_back(std::move(v));
     } else {
-      candidates.push_back({c, "nominal", Vec3::Zero(), 0});
+      candidates.push_back({c, "nominal", Vec3::Zero(), 0, {}});
     }
   }
+  for (Candidate& c : candidates) c.sequence = sequenceName;
   std::error_code ec;
   std::filesystem::create_directories(a.out, ec);
   if (ec) return usage("cannot create " + a.out + ": " + ec.message());

@@ -1,7 +1,8 @@
 #pragma once
-// plan's candidates on several threads, with progress on a terminal (runs
-// done, rate, ETA, which coils each run deploys) and a clean stop: after
-// SIGINT or SIGTERM no new candidate starts.
+// plan's candidates on several threads, with progress on a terminal (mm of
+// coil deployed of all the runs' coils, rate, ETA; which coil of which
+// sequence a run deploys, how far, and its simulated time) and a clean stop:
+// after SIGINT or SIGTERM no new candidate starts.
 #include <string>
 #include <vector>
 

@@ -60,7 +60,7 @@ void Progress::draw(double done, const std::string& note) {
   std::string line = label_ + ": " + number(done);
   if (total_ > 0) line += " of " + number(total_);
   line += " " + unit_;
-  if (total_ > 0) line += " (" + std::to_string(int(100 * done / total_)) + " %)";
+  if (total_ > 0) line += " (" + std::to_string(int(std::floor(100 * done / total_ + 1e-6))) + " %)";  // 60 of 60 mm summed in metres is 99.99...
   line += ", " + number(rate) + " " + unit_ + " per s";
   if (total_ > 0 && rate > 0) line += ", ETA " + duration((total_ - done) / rate);
   if (!note.empty()) line += "; " + note;

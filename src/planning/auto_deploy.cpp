@@ -74,8 +74,40 @@ bool FeltTipForce::add(const Deployment& dep, const State& state, bool still, do
   return stillTime_ >= window_ - 0.5 * dt;
 }
 
+ForceDecay::ForceDecay(double lag, double tolerance, double dt)
+    : lag_(size_t(std::max(1.0, std::round(lag / dt)))), tolerance_(tolerance), ring_(2 * lag_ + 1) {}
+
+bool ForceDecay::add(double value) {
+  const size_t n = ring_.size();
+  ring_[count_ % n] = value;
+  ++count_;
+  if (count_ < n) return false;
+  const size_t now = count_ - 1;
+  const double a = ring_[(now - 2 * lag_) % n], b = ring_[(now - lag_) % n], c = value;
+  const auto [lo, hi] = std::minmax_element(ring_.begin(), ring_.end());
+  if (*hi - *lo > tolerance_) return false;
+  // Still decaying one way, each lag by a factor r: what is left is d2 (r + r^2 + ...).
+  const double d1 = b - a, d2 = c - b;
+  if (d1 * d2 > 0 && std::abs(d2) < std::abs(d1)) {
+    const double r = d2 / d1;
+    if (std::abs(d2) * r / (1 - r) > tolerance_) return false;
+  }
+  return true;
+}
+
+namespace {
+
+// The fastest node of a rod, m/s.
+double fastestNode(const RodState& rod) {
+  double v2 = 0;
+  for (int i = 0; i < rod.activeNodes; ++i) v2 = std::max(v2, rod.v[size_t(i)].squaredNorm());
+  return std::sqrt(v2);
+}
+
+}  // namespace
+
 AutoDeployResult autoDeploy(const Model& model, State& state, const AutoDeployOptions& o,
-                            const WallForceCheck& contacts) {
+                            const WallForceCheck& contacts, const DeployProgress& progress) {
   using Kind = DeviceCommand::Kind;
   AutoDeployResult r;
   const Deployment& dep = *model.device;
@@ -89,6 +121,9 @@ AutoDeployResult autoDeploy(const Model& model, State& state, const AutoDeployOp
     ++*counts[int(p)];
   };
   double phaseEnd = 0, twistSign = 1;
+  ForceDecay decay(o.decayWindow, o.pauseTolerance, dt);
+  bool decayed = false;             // the felt force has decayed since the last twist
+  double stillFor = 0, settleStart = 0;  // s the coil has been still (settling, after detach)
   int twistsHere = 0, pullBacksHere = 0;
   double progressMark = ds.deployed;  // deployed length at the last pull-back reset
   auto issue = [&](double t, const DeviceCommand& c) {
@@ -110,17 +145,20 @@ AutoDeployResult autoDeploy(const Model& model, State& state, const AutoDeployOp
     if (phase == Phase::Stroke && !ds.motion.moving()) {
       phase = Phase::Feel;
     } else if (phase == Phase::Feel && fullyOut && !ds.detached) {
-      phase = Phase::Settle, phaseEnd = t + o.settle;
+      phase = Phase::Settle, phaseEnd = t + o.settle, settleStart = t, stillFor = 0;
     } else if (phase == Phase::Twist && t >= phaseEnd - 1e-12) {
       phase = Phase::Pause, phaseEnd = t + o.pause;
-    } else if (phase == Phase::Pause && t >= phaseEnd - 1e-12) {
+    } else if (phase == Phase::Pause && (decayed || t >= phaseEnd - 1e-12)) {
       phase = Phase::Feel;
     } else if (phase == Phase::PullBack && !ds.motion.moving()) {
       phase = Phase::Feel;
-    } else if (phase == Phase::Settle && t >= phaseEnd - 1e-12) {
+    } else if (phase == Phase::Settle && (stillFor >= o.decayWindow - 0.5 * dt || t >= phaseEnd - 1e-12)) {
+      char settled[64];
+      std::snprintf(settled, sizeof settled, ": detaching after %.3f s of settling", t - settleStart);
+      r.log.push_back(sText(t) + settled);
       issue(t, {Kind::Detach, 0, 0});
-      phase = Phase::After, phaseEnd = t + o.afterDetach;
-    } else if (phase == Phase::After && t >= phaseEnd - 1e-12) {
+      phase = Phase::After, phaseEnd = t + o.afterDetach, stillFor = 0;
+    } else if (phase == Phase::After && (stillFor >= o.decayWindow - 0.5 * dt || t >= phaseEnd - 1e-12)) {
       r.time = t;
       r.placed = ds.detached;
       r.deployed = ds.deployed;
@@ -134,6 +172,7 @@ AutoDeployResult autoDeploy(const Model& model, State& state, const AutoDeployOp
     r.effort.stepSeconds += std::chrono::duration<double>(t1 - t0).count();
     r.effort.substepped += state.substepped - substeppedBefore;
     countStep(r.effort, phase);
+    if (progress && s % 100 == 0) progress(ds.deployed, t);
     const Clock operatorWork(r.effort.operatorSeconds);
     for (const std::string& n : state.device.notes) r.log.push_back(sText(t) + ": " + n);
     state.device.notes.clear();
@@ -152,11 +191,16 @@ AutoDeployResult autoDeploy(const Model& model, State& state, const AutoDeployOp
       r.wallForcesAvailable = true;
       r.wall.add(state, dt, o.wallForceThreshold);
     }
+    if (phase == Phase::Settle || phase == Phase::After) {
+      const RodState& coil = state.rods[size_t(ds.detached ? dep.freeRod : dep.chainRod)];
+      stillFor = o.settleSpeed > 0 && fastestNode(coil) < o.settleSpeed ? stillFor + dt : 0;
+    }
     if (ds.detached) continue;
     const bool felt = feel.add(dep, state, !pusherMoved, dt);
     if (felt) {
       r.maxTipForce = std::max(r.maxTipForce, feel.felt);
       r.maxDeploymentForce = std::max(r.maxDeploymentForce, feel.axial);
+      if (phase == Phase::Pause && o.pauseTolerance > 0) decayed = decay.add(feel.felt);
     }
     if (phase != Phase::Feel || !felt) continue;
     // The operator's decision, on the resistance felt at rest.
@@ -171,6 +215,7 @@ AutoDeployResult autoDeploy(const Model& model, State& state, const AutoDeployOp
       twistSign = -twistSign;
       ++twistsHere, ++r.corrections;
       phase = Phase::Twist, phaseEnd = tNext + o.twistAngle / o.twistRate;
+      decay.reset(), decayed = false;
     } else if (feel.felt <= o.hardLimitFactor * o.forceThreshold) {
       r.log.push_back(sText(tNext) + ": pushing on through " + mNText(feel.felt) + " at " + mmText(ds.deployed));
       twistsHere = 0;

@@ -2,12 +2,13 @@
 // A coil deployed the way a clinician pushes it, headless: push a short
 // stroke at a set speed, stop and feel the resistance; when the force at the
 // catheter tip is above a threshold, twist a little (alternating sides) and
-// let the loops find room; if it stays high, push on through moderate
-// resistance, and pull back a little to re-advance when it is high; when
-// the coil is fully out, let it settle and detach. A coil that still meets a
-// high resistance after the pull-backs is reported as not placed (it does
-// not fit), never pushed on for ever. The commands it gives are kept as a
-// timeline, so `coilsim run --input` can replay the same deployment.
+// let the loops find room until the felt force has decayed; if it stays
+// high, push on through moderate resistance, and pull back a little to
+// re-advance when it is high; when the coil is fully out, let it settle
+// until it is still and detach. A coil that still meets a high resistance
+// after the pull-backs is reported as not placed (it does not fit), never
+// pushed on for ever. The commands it gives are kept as a timeline, so
+// `coilsim run --input` can replay the same deployment.
 // Measures the felt tip (deployment) force, the catheter kickback and the
 // wall forces, and at the end the sac metrics.
 #include <functional>
@@ -32,9 +33,16 @@ struct AutoDeployOptions {
   double pullBack = 2e-3;        // m pulled back to re-advance
   double twistAngle = M_PI / 6;  // rad per correction
   double twistRate = M_PI;       // rad/s
-  double pause = 0.2;            // s of rest after a twist before feeling again
-  double settle = 0.5;           // s after full deployment before detach
-  double afterDetach = 0.2;      // s simulated after detach
+  double pause = 0.2;            // s: longest rest after a twist before feeling again
+  // N: the rest after a twist ends once the felt force has decayed to within
+  // this of where it is going (ForceDecay); 0: always the whole pause.
+  double pauseTolerance = 0.5e-3;
+  double decayWindow = 0.01;     // s: ForceDecay's lag
+  double settle = 0.5;           // s: longest wait after full deployment before detach
+  double afterDetach = 0.2;      // s: longest simulated after detach
+  // m/s: the settling before detach, and the run after it, end once no node
+  // of the coil has moved faster than this for decayWindow; 0: always the whole time.
+  double settleSpeed = 2e-3;
   double maxTime = 0;            // s: give up (reported) beyond this; 0: 60 s + 4 L / pushSpeed
   double wallForceThreshold = 0.05;  // N: wall load counted as "above the safety threshold"
 };
@@ -99,9 +107,31 @@ class FeltTipForce {
   double window_, stillTime_ = 0;
 };
 
+// Whether a sampled signal has settled, for ending a rest as soon as what
+// it waits for is over. Settled when, over the last 2 lags, the signal moved
+// by at most `tolerance`, and an exponential decay through its values at
+// t - 2 lag, t - lag and t has at most `tolerance` still to go (the tail of
+// the geometric series of its steps, d2 r / (1 - r), r = d2 / d1).
+class ForceDecay {
+ public:
+  ForceDecay(double lag, double tolerance, double dt);
+  void reset() { count_ = 0; }
+  // One sample; returns true once settled (false before 2 lags of samples).
+  bool add(double value);
+
+ private:
+  size_t lag_;
+  double tolerance_;
+  std::vector<double> ring_;  // (2 lag + 1) latest samples
+  size_t count_ = 0;
+};
+
+// Told every 100 steps how far a deployment is: m of coil out, s simulated.
+using DeployProgress = std::function<void(double deployed, double time)>;
+
 // Runs the model's deployment from the state's current configuration to
 // detach (or until the operator gives up, or maxTime).
 AutoDeployResult autoDeploy(const Model& model, State& state, const AutoDeployOptions& options,
-                            const WallForceCheck& contacts = {});
+                            const WallForceCheck& contacts = {}, const DeployProgress& progress = {});
 
 }  // namespace coilsim::planning

@@ -1,6 +1,7 @@
 // Case and sac files -> PracticeCase / Sac.
 #include "planning/case_file.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "io/mesh_file.h"
@@ -103,7 +104,7 @@ PracticeCase parseCase(const nlohmann::json& document, const std::string& file) 
   const JsonNode root(document, file);
   if (!root.isObject()) root.expected("a case object {\"format\": \"coilsim-case/1\", ...}");
   root.allowKeys({"format", "name", "description", "scene", "sac", "coils", "catalogue", "goal", "spacing_mm", "morphology",
-                  "first_coil"});
+                  "first_coil", "sequences"});
   // What `coilsim case new` measured and recommended: for the reader, recomputed from the sac when needed.
   for (const char* info : {"morphology", "first_coil"})
     if (auto m = root.optional(info); m && !m->isObject()) m->expected("an object (written by coilsim case new)");
@@ -130,6 +131,24 @@ PracticeCase parseCase(const nlohmann::json& document, const std::string& file) 
       name.fail(e.what());
     }
   }
+  if (auto seqs = root.optional("sequences")) {
+    for (const JsonNode& s : seqs->items(1, 50, "an array of sequences {\"name\": ..., \"coils\": [...]}")) {
+      if (!s.isObject()) s.expected("a sequence {\"name\": ..., \"coils\": [coil names of the case's \"coils\"]}");
+      s.allowKeys({"name", "coils"});
+      CoilSequence seq;
+      const JsonNode name = s.child("name");
+      seq.name = name.string();
+      for (const CoilSequence& other : c.sequences)
+        if (other.name == seq.name) name.fail("two sequences are called \"" + seq.name + "\"");
+      for (const JsonNode& coil : s.child("coils").items(1, 50, "an array of coil names from the case's \"coils\"")) {
+        const std::string n = coil.string();
+        const auto it = std::find_if(c.coils.begin(), c.coils.end(), [&](const io::CoilSpec& k) { return k.name == n; });
+        if (it == c.coils.end()) coil.fail("\"" + n + "\" is not in the case's coil set (\"coils\")");
+        seq.coils.push_back(*it);
+      }
+      c.sequences.push_back(std::move(seq));
+    }
+  }
   if (auto g = root.optional("goal")) {
     g->allowKeys({"min_packing_density", "no_protrusion", "max_wall_force_mN", "detach_in_sac"});
     if (auto v = g->optional("min_packing_density")) c.goal.minPackingDensity = v->number(Bounds::closed(0, 1));
@@ -139,6 +158,16 @@ PracticeCase parseCase(const nlohmann::json& document, const std::string& file) 
   }
   if (auto s = root.optional("spacing_mm")) c.spacingMm = s->number(Bounds{0.05, 5, false, false, "mm"});
   return c;
+}
+
+const CoilSequence& findSequence(const PracticeCase& c, const std::string& name) {
+  std::string names;
+  for (const CoilSequence& s : c.sequences) {
+    if (s.name == name) return s;
+    names += (names.empty() ? "" : ", ") + s.name;
+  }
+  throw io::InputError(c.file + ": no sequence called \"" + name + "\" in \"sequences\"; " +
+                       (names.empty() ? std::string("the case has none") : "it has: " + names));
 }
 
 namespace {

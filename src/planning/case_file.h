@@ -24,11 +24,19 @@ struct Goal {
   bool detachInSac = true;
 };
 
+// A named deployment order of coils from the case's set (framing, filling,
+// finishing), the sequence `coilsim plan CASE --sequence NAME` deploys.
+struct CoilSequence {
+  std::string name;
+  std::vector<io::CoilSpec> coils;  // in deployment order
+};
+
 struct PracticeCase {
   std::string file, name, description;
   io::SceneSpec scene;               // with a deployment block
   Sac sac;
   std::vector<io::CoilSpec> coils;   // the coil set, from the catalogue
+  std::vector<CoilSequence> sequences;  // "sequences": each a list of names from the coil set
   Goal goal;
   double spacingMm = 0.5;            // beam length of the coils
 };
@@ -39,9 +47,16 @@ Sac readSac(const io::JsonNode& node);
 
 // Reads a case: "scene" is a path relative to the case file or an inline
 // scene object; "coils" names catalogue coils ("catalogue": directory
-// relative to the case file, default the project's assets/coils).
+// relative to the case file, default the project's assets/coils);
+// "sequences" (optional) is [{"name": ..., "coils": [names of the set]}].
+// A sequence naming a coil outside the set, or two sequences of one name,
+// is an InputError naming the file and the field.
 PracticeCase loadCase(const std::string& path);
 PracticeCase parseCase(const nlohmann::json& document, const std::string& file);
+
+// The case's sequence called `name`; throws io::InputError naming the case
+// file and the sequences it has when there is none.
+const CoilSequence& findSequence(const PracticeCase& c, const std::string& name);
 
 // The coil catalogue directory: assets/coils of the data directory set by
 // setDataDirectory (an installed program's share/coilsim), else of the source

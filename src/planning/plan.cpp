@@ -90,16 +90,18 @@ void accumulate(AutoDeployResult& total, AutoDeployResult&& one) {
 }  // namespace
 
 CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const WallForceCheck& contacts,
-                             int detectionThreads) {
+                             int detectionThreads, const RunProgressCallback& progress) {
   CandidateResult r;
   r.name = c.name();
   r.variant = c.variant;
+  r.sequence = c.sequence;
   r.deploy.placed = false;
   const auto start = std::chrono::steady_clock::now();
   try {
     if (c.coils.empty()) throw std::invalid_argument("a candidate without coils");
     std::vector<PlacedCoil> placed;
     int chainRod = -1, catheterNodes = 0;  // of the last deployment: chain nodes before its tip are catheter
+    double before = 0;                     // m of the coils deployed before this one
     for (size_t k = 0; k < c.coils.size(); ++k) {
       const io::CoilSpec& coil = c.coils[k];
       io::SceneSpec spec = setup.scene;
@@ -128,8 +130,16 @@ CandidateResult runCandidate(const PlanSetup& setup, const Candidate& c, const W
       restorePlacedRods(r.state, firstPlaced, placed);
       chainRod = d.chainRod, catheterNodes = d.tipNode;
       setDrawnCatheterActive(d, r.state, false);
-      AutoDeployResult one =
-          autoDeploy(r.model, r.state, setup.deploy, contacts ? contacts : WallForceCheck(hasWallForces));
+      RunProgress told{k, c.coils.size(), coil.name, 0, units::mmToM(coil.lengthMm), before, r.deploy.time};
+      const double timeBefore = r.deploy.time;
+      const DeployProgress tell = [&](double deployed, double time) {
+        told.deployed = deployed, told.time = timeBefore + time;
+        progress(told);
+      };
+      AutoDeployResult one = autoDeploy(r.model, r.state, setup.deploy,
+                                        contacts ? contacts : WallForceCheck(hasWallForces),
+                                        progress ? tell : DeployProgress());
+      before += told.coilLength;
       setDrawnCatheterActive(d, r.state, true);  // for the picture
       if (c.coils.size() > 1) {
         const std::string label = coil.name + ": ";
@@ -185,23 +195,25 @@ std::vector<CandidateResult> runCandidates(const PlanSetup& setup, const std::ve
 
 std::vector<Candidate> sensitivityVariants(const std::vector<io::CoilSpec>& coil, double shiftMm, double tiltDeg) {
   std::vector<Candidate> v;
-  v.push_back({coil, "nominal", Vec3::Zero(), 0});
+  v.push_back({coil, "nominal", Vec3::Zero(), 0, {}});
   // The axes across the exit direction are set per scene by runCandidate's
   // catheter; here shifts are along the scene axes, which is what a user
   // reading "tip 0.5 mm higher" means.
   const char* names[3] = {"x", "y", "z"};
-  for (int a = 0; a < 3; ++a)
+  // A zero shift or tilt is the nominal run again: not run twice.
+  for (int a = 0; a < 3 && shiftMm != 0; ++a)
     for (const double s : {-shiftMm, shiftMm}) {
       Vec3 shift = Vec3::Zero();
       shift[a] = s;
       char label[48];
       std::snprintf(label, sizeof label, "tip %s%+g mm", names[a], s);
-      v.push_back({coil, label, shift, 0});
+      v.push_back({coil, label, shift, 0, {}});
     }
   for (const double t : {-tiltDeg, tiltDeg}) {
+    if (tiltDeg == 0) break;
     char label[48];
     std::snprintf(label, sizeof label, "tilt %+g deg", t);
-    v.push_back({coil, label, Vec3::Zero(), t});
+    v.push_back({coil, label, Vec3::Zero(), t, {}});
   }
   return v;
 }
@@ -219,6 +231,7 @@ ordered_json planJson(const PlanSetup& setup, const std::vector<CandidateResult>
     ordered_json c;
     c["name"] = r.name;
     c["variant"] = r.variant;
+    if (!r.sequence.empty()) c["sequence"] = r.sequence;
     c["ok"] = r.ok;
     if (!r.ok) c["error"] = r.error;
     c["placed"] = r.ok && r.deploy.placed;

@@ -4,6 +4,7 @@
 // for sensitivity), headless, and the outcomes are compared side by side.
 // Candidates are independent: runCandidates runs them on several threads,
 // one Model and State each.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,11 +46,23 @@ struct Candidate {
   std::string variant = "nominal";
   Vec3 tipShiftMm = Vec3::Zero();  // added to the catheter tip position
   double tipTiltDeg = 0;           // exit direction turned about the reference normal
+  std::string sequence;            // the case's name of the sequence, when it is one of a case's "sequences"
   std::string name() const;        // the coil names joined by " + "
 };
 
+// How far a run is, for a progress line.
+struct RunProgress {
+  size_t coil = 0, coils = 1;   // coil (0-based) of the candidate's coils being deployed
+  std::string coilName;
+  double deployed = 0;          // m of this coil out
+  double coilLength = 0;        // m
+  double deployedBefore = 0;    // m of the coils before it (each counted whole)
+  double time = 0;              // s simulated by the run so far
+};
+using RunProgressCallback = std::function<void(const RunProgress&)>;
+
 struct CandidateResult {
-  std::string name, variant;
+  std::string name, variant, sequence;
   bool ok = false;
   std::string error;
   SacMetrics sac;
@@ -64,7 +77,7 @@ struct CandidateResult {
 // detection uses `detectionThreads` (1 or 2) threads; the results are the
 // same bit for bit (physics/contact/detect_parallel.h).
 CandidateResult runCandidate(const PlanSetup& setup, const Candidate& candidate, const WallForceCheck& contacts = {},
-                             int detectionThreads = 1);
+                             int detectionThreads = 1, const RunProgressCallback& progress = {});
 
 // Threads for each run's contact detection when `runsAtOnce` runs go at
 // once: 2 for a single run on a machine of two cores or more whose load

@@ -55,12 +55,18 @@ TEST(Progress, SilentOffATerminalAndWithQuiet) {
 TEST(Progress, PlanSaysWhichCoilsEachRunDeploys) {
   const fs::path dir = scratch("progress_plan");
   const Exec r = onTerminal({"plan", kSource + "/scenes/cases/sphere-7mm-wide-neck.json", "--coils",
-                             "finishing-2x10,finishing-2x10+finishing-2x10", "--no-screenshots", "--out",
+                             "finishing-2x10,finishing-2x10+finishing-3x40", "--no-screenshots", "--out",
                              (dir / "plan").string()},
                             dir);
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_CONTAINS(r.out, "run 1 of 2: deploying coil finishing-2x10 (nominal)");
-  EXPECT_CONTAINS(r.out, "run 2 of 2: deploying sequence of 2 coils finishing-2x10 + finishing-2x10 (nominal)");
+  EXPECT_CONTAINS(r.out, "run 2 of 2: deploying sequence of 2 coils finishing-2x10 + finishing-3x40 (nominal)");
+  // How far the runs are: mm deployed of the 60 mm of coil the plan holds, and a run's coil (the 40 mm one
+  // takes long enough to be drawn) and simulated time.
+  EXPECT_CONTAINS(r.out, " of 60 mm deployed");
+  EXPECT_CONTAINS(r.out, "mm deployed per s");
+  EXPECT_CONTAINS(r.out, "coil 2 of 2 finishing-3x40: ");
+  EXPECT_CONTAINS(r.out, " s simulated (");
   const Exec file = coilsim({"plan", kSource + "/scenes/cases/sphere-7mm-wide-neck.json", "--coils", "finishing-2x10",
                              "--no-screenshots", "--out", (dir / "plan2").string()},
                             dir);

@@ -165,6 +165,56 @@ TEST(PlanCommand, ACoilThatMeetsResistanceEverywhereIsReportedNotPlaced) {
   fs::remove_all(out);
 }
 
+// The 7 mm case with its own sequences replaced: written beside the test's plans.
+fs::path caseWithSequences(const std::string& name, const nlohmann::json& sequences) {
+  std::ifstream in(kSource + "/scenes/cases/sphere-7mm-wide-neck.json");
+  nlohmann::json doc = nlohmann::json::parse(in);
+  doc["sequences"] = sequences;
+  const fs::path file = scratch(name) / "case.json";
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << doc.dump(1);
+  return file;
+}
+
+TEST(PlanCommand, ACasesSequenceIsPlannedByNameOrFirst) {
+  const nlohmann::json sequences = {{{"name", "short"}, {"coils", {"finishing-2x10", "finishing-2x10"}}},
+                                    {{"name", "other"}, {"coils", {"finishing-2x10"}}}};
+  const fs::path c = caseWithSequences("coilsim-plan-sequences", sequences);
+  const fs::path first = c.parent_path() / "first", named = c.parent_path() / "named";
+  std::string log;
+  // No --coils: the case's first sequence, as one run into one sac.
+  ASSERT_EQ(run("plan " + c.string() + " --no-screenshots --out " + first.string(), &log), 0) << log;
+  const nlohmann::json a = readPlan(first)["coils"];
+  ASSERT_EQ(a.size(), 1u) << a.dump();
+  EXPECT_EQ(a[0]["name"], "finishing-2x10 + finishing-2x10");
+  EXPECT_EQ(a[0]["sequence"], "short");
+  EXPECT_TRUE(a[0]["placed"].get<bool>()) << a.dump();
+  ASSERT_EQ(run("plan " + c.string() + " --sequence other --no-screenshots --out " + named.string(), &log), 0) << log;
+  const nlohmann::json b = readPlan(named)["coils"];
+  ASSERT_EQ(b.size(), 1u) << b.dump();
+  EXPECT_EQ(b[0]["name"], "finishing-2x10");
+  EXPECT_EQ(b[0]["sequence"], "other");
+  fs::remove_all(c.parent_path());
+}
+
+TEST(PlanCommand, AnUnknownSequenceOrACoilOutsideTheSetExitsTwo) {
+  const fs::path c = caseWithSequences("coilsim-plan-bad-sequence", {{{"name", "s"}, {"coils", {"finishing-2x10"}}}});
+  const std::string out = " --out " + (c.parent_path() / "plan").string();
+  std::string log;
+  EXPECT_EQ(run("plan " + c.string() + " --sequence nope" + out, &log), 2);
+  EXPECT_NE(log.find(c.string() + ": no sequence called \"nope\""), std::string::npos) << log;
+  EXPECT_NE(log.find("it has: s"), std::string::npos) << log;
+  EXPECT_EQ(run("plan " + c.string() + " --sequence s --coils finishing-2x10" + out, &log), 2);
+  EXPECT_NE(log.find("not both"), std::string::npos) << log;
+  const fs::path bad = caseWithSequences("coilsim-plan-bad-sequence2",
+                                         {{{"name", "s"}, {"coils", {"finishing-2x10", "framing-complex-10x300"}}}});
+  EXPECT_EQ(run("plan " + bad.string() + out, &log), 2);
+  EXPECT_NE(log.find(bad.string() + ": /sequences/0/coils/1"), std::string::npos) << log;
+  EXPECT_NE(log.find("not in the case's coil set"), std::string::npos) << log;
+  fs::remove_all(c.parent_path());
+  fs::remove_all(bad.parent_path());
+}
+
 TEST(PlanCommand, BadInputExitsTwoNamingTheProblem) {
   std::string log;
   EXPECT_EQ(run("plan " + kSource + "/scenes/cases/sphere-7mm-wide-neck.json --coils no-such-coil --out /tmp/x", &log), 2);
