@@ -21,7 +21,7 @@ namespace {
 // Records every input of a window session and keeps its score from the
 // window's own steps (planning::SessionScorer, the hooks PracticeSession
 // calls); writes the session and the score sheet when the window closes.
-// It also holds the session's coils (planning::CoilSequence): the next
+// It also holds the session's coils (planning::PracticeCoilChain): the next
 // coil of a scripted sequence goes in once the running one has detached,
 // exactly where a headless session of the same inputs changes coils.
 class WindowScorer : public ui::RunObserver {
@@ -31,7 +31,7 @@ class WindowScorer : public ui::RunObserver {
       : pc_(pc), coils_(coils), draw_(std::move(draw)), outputs_(std::move(outputs)) {
     restarted();
   }
-  const planning::CoilSequence& sequence() const { return *sequence_; }
+  const planning::PracticeCoilChain& sequence() const { return *sequence_; }
 
   DeviceCommand adjust(const DeviceCommand& given) override { return planning::asRecorded(given); }
   void accepted(double t, const DeviceCommand& given, const DeviceCommand& applied) override {
@@ -108,7 +108,7 @@ class WindowScorer : public ui::RunObserver {
   size_t queued_ = 0;  // next coils of coils_ gone in (or refused)
   ui::DrawDataHook draw_;
   std::shared_ptr<WindowOutputs> outputs_;
-  std::optional<planning::CoilSequence> sequence_;
+  std::optional<planning::PracticeCoilChain> sequence_;
   std::optional<planning::SessionScorer> scorer_;
 };
 
@@ -140,7 +140,7 @@ ui::SceneSetup practiceSetup(const planning::PracticeCase& pc, const planning::S
                              std::shared_ptr<WindowOutputs> outputs, std::shared_ptr<WindowScorer>* scorerOut = nullptr) {
   const ui::DrawDataHook draw = practiceDrawing(pc);
   const auto scorer = std::make_shared<WindowScorer>(pc, coils, draw, outputs);
-  const planning::CoilSequence& seq = scorer->sequence();
+  const planning::PracticeCoilChain& seq = scorer->sequence();
   ui::SceneSetup s;
   s.model = seq.model();
   s.state = seq.start();

@@ -32,9 +32,9 @@ void letPlacedCoilsSleep(Model& model, bool anyPlaced) {
 
 }  // namespace
 
-CoilSequence::CoilSequence(const PracticeCase& pc, const std::string& first) : case_(&pc) { build(first, nullptr); }
+PracticeCoilChain::PracticeCoilChain(const PracticeCase& pc, const std::string& first) : case_(&pc) { build(first, nullptr); }
 
-void CoilSequence::build(const std::string& coilName, const State* before) {
+void PracticeCoilChain::build(const std::string& coilName, const State* before) {
   const PracticeCase& pc = *case_;
   const io::CoilSpec* coil = nullptr;
   std::string names;
@@ -81,14 +81,14 @@ void CoilSequence::build(const std::string& coilName, const State* before) {
   coils_.push_back(coilName);
 }
 
-std::string CoilSequence::whyNot(const State& now, const std::string& next) const {
+std::string PracticeCoilChain::whyNot(const State& now, const std::string& next) const {
   if (!now.device.detached) return "the coil " + coil() + " has not been detached yet: detach it before the next coil";
   for (const io::CoilSpec& c : case_->coils)
     if (c.name == next) return "";
   return "the case has no coil \"" + next + "\"";
 }
 
-State CoilSequence::next(const State& now, const std::string& next) {
+State PracticeCoilChain::next(const State& now, const std::string& next) {
   if (const std::string why = whyNot(now, next); !why.empty()) throw io::InputError(case_->file + ": " + why);
   const std::vector<PlacedCoil> kept = placed_;
   keepPlacedCoils(def_, now, firstPlaced_, model_.device->freeRod, coil(), placed_);

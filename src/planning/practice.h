@@ -36,12 +36,12 @@ namespace coilsim::planning {
 // (placed_coils.h) that the next one touches. Each coil has a model of its
 // own (the deployment's rods, then the placed coils'); the session's clock
 // and records in the State (time, statistics, warnings) go on across them.
-class CoilSequence {
+class PracticeCoilChain {
  public:
   // The case's coil `first` going in with nothing placed yet. Throws
   // io::InputError naming the case file if the coil is not in its set or
   // the scene cannot be compiled.
-  CoilSequence(const PracticeCase& practiceCase, const std::string& first);
+  PracticeCoilChain(const PracticeCase& practiceCase, const std::string& first);
 
   const Model& model() const { return model_; }
   // The running coil's start: its deployment at the initial length, the placed coils at rest.
@@ -98,7 +98,7 @@ class PracticeSession {
   PracticeSession(const PracticeCase& practiceCase, const std::string& coilName, const WallForceCheck& contacts = {});
 
   // The next coil of the case's set goes in through the same catheter from
-  // the next step, the detached ones kept in the sac (CoilSequence).
+  // the next step, the detached ones kept in the sac (PracticeCoilChain).
   // Returns "" or why not (the running coil has not detached, no such
   // coil): then nothing changes, and the score sheet lists it.
   std::string nextCoil(const std::string& coilName);
@@ -122,14 +122,14 @@ class PracticeSession {
   long steps() const { return steps_; }
   const std::string& view() const { return scorer_->view(); }  // the view looked through now
   double time() const { return double(steps_) * model().timeStep; }
-  const CoilSequence& coils() const { return coils_; }
+  const PracticeCoilChain& coils() const { return coils_; }
   const ScoreSheet& runningScore() const { return scorer_->running(); }
 
   // The recording (SessionScorer::recording) ending now.
   nlohmann::ordered_json recording() const;
 
  private:
-  CoilSequence coils_;
+  PracticeCoilChain coils_;
   State state_;
   long steps_ = 0;
   std::optional<SessionScorer> scorer_;
