@@ -52,6 +52,8 @@ struct DynamicRun {
   Depths deepest;   // over every checked step
   Depths settled;   // at the end of the settling, before the push
   long refused = 0, substepped = 0;
+  double pushForce = 0;  // largest coil-coil force on a node of the pushed coil, N
+  double tipOffLine = 0;  // how far the pushed coil's tip was turned off its line by the packing, m
 };
 
 // The packing settles under gravity for `settle` steps (from the laid
@@ -87,6 +89,10 @@ DynamicRun settleAndPush(bool contacts, int settle, int hold) {
     if (!step(model, s).ok()) ++out.refused;
     if (k % kEvery == 0) check(measure(s, sac));
     if (k == settle) out.settled = measure(s, sac);
+    const RodState& pushed = s.rods.back();
+    for (double f : pushed.contact.rodForce) out.pushForce = std::max(out.pushForce, f);
+    const Vec3 tip = pushed.x[size_t(pushed.activeNodes - 1)], base = pushed.x.front();
+    out.tipOffLine = std::max(out.tipOffLine, (tip - base - (tip - base).dot(along) * along).norm());
   }
   out.substepped = s.substepped;
   return out;
@@ -99,6 +105,10 @@ TEST(DensePacking, SettlingAndAPushedCoilKeepTheWiresApartAndInsideTheWall) {
               "wire past the wall's faces %.2f um (skin %.2f um); %ld steps in substeps, %ld refused\n",
               run.settled.touching, run.settled.segments, run.deepest.pair * 1e6, 100 * run.deepest.pair / d,
               run.deepest.wall * 1e6, kWallSkin * kWireRadius * 1e6, run.substepped, run.refused);
+  std::printf("[ measured ] pushed coil: largest coil-coil force on a node %.3f mN, tip turned %.3f mm off its line\n",
+              run.pushForce * 1e3, run.tipOffLine * 1e3);
+  // The push reached the packing.
+  EXPECT_GT(run.pushForce, 0.0);
   // The scene is dense: at least 90 % of the segments (the pushed coil's
   // ten, still apart, included) within 10 % of r of a wire or the wall.
   EXPECT_GE(run.settled.touching, 0.9 * run.settled.segments);
