@@ -60,8 +60,15 @@ std::optional<Failure> solveUnilateral(BlockTridiagonal& A, std::vector<Vec6>& r
     if (c[j].node >= n || translationFixed(fixedMask[c[j].node])) s.active[j] = 0;
 
   std::vector<UnilateralScratch::NodeSet>& sets = s.sets;
+  sets.clear();
   for (s.passes = 1; s.passes <= kMaxActiveSetPasses; ++s.passes) {
-    copyLeading(s.free, A, n);
+    // Back to the free system: only the last pass's constrained rows and columns changed.
+    for (const UnilateralScratch::NodeSet& set : sets) {
+      const int i = c[set.index[0]].node;
+      A.diag[i] = s.free.diag[i];
+      if (i > 0) A.lower[i - 1] = s.free.lower[i - 1];
+      if (i + 1 < n) A.lower[i] = s.free.lower[i];
+    }
     std::copy(s.freeRhs.begin(), s.freeRhs.end(), rhs.begin());
     std::fill(s.used.begin(), s.used.end(), 0);
     sets.clear();
