@@ -76,7 +76,10 @@ double assemble(const Model& model, int rodIndex, RodState& rod, double time, do
     w.force[l.node].head<3>() += loadFactor * l.force;
     w.force[l.node].tail<3>() += loadFactor * l.moment;
   }
-  RodForces out{w.force, w.effectK, w.effectD, w.effectsTouchedMatrix, coupling};
+  // Node constraints (wall contacts held as constraints) in a dynamic step only.
+  w.unilateral.constraints.clear();
+  RodForces out{w.force, w.effectK, w.effectD, w.effectsTouchedMatrix, coupling,
+                coupling ? nullptr : &w.unilateral.constraints};
   const EffectContext ctx{model, rm, rod, time, loadFactor, h, coupling ? SolveKind::Static : SolveKind::Dynamic};
   for (const EffectUse& u : model.effects)
     if (u.enabled) u.effect->apply(ctx, u.values, out);

@@ -90,17 +90,31 @@ StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, d
       for (int d = 0; d < 6; ++d)
         if (m & (1u << d)) applyDirichlet(A, w.rhs, i, d, w.fixedValue[i][d] - w.velocity[i][d], n);
     }
-    if (!w.solver.factorize(A, n)) {
+    if (!w.unilateral.constraints.empty()) {
+      // Wall contacts held as constraints: an active-set solve on the same band (physics/unilateral.h).
+      if (std::optional<Failure> f = solveUnilateral(A, w.rhs, n, h, it == 0 ? &w.velocity : nullptr, w.fixedMask,
+                                                          w.solver, w.unilateral)) {
+        f->rod = rm.name;
+        return {std::move(*f)};
+      }
+    } else if (!w.solver.factorize(A, n)) {
       Failure f = badRod(rm.name, "implicit matrix is not positive definite");
       f.kind = FailureKind::SolverFailure;
       return {std::move(f)};
+    } else {
+      w.solver.solve(w.rhs);
     }
-    w.solver.solve(w.rhs);
     for (int i = 0; i < n; ++i) {
       r.v[i] += w.rhs[i].head<3>();
       r.w[i] += w.rhs[i].tail<3>();
     }
     integratePoses(r, h);
+  }
+  // The wall's force per node is its constraints' multipliers, known only now.
+  if (!w.unilateral.constraints.empty()) {
+    std::fill(r.contact.wallForce.begin(), r.contact.wallForce.end(), 0.0);
+    for (const NodeConstraint& c : w.unilateral.constraints)
+      if (c.force && size_t(c.node) < r.contact.wallForce.size()) r.contact.wallForce[c.node] += *c.force;
   }
   return {};
 }

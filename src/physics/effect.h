@@ -51,6 +51,20 @@ struct NodeCoupling {
   Mat3 stiffness = Mat3::Zero();
 };
 
+// A unilateral constraint an effect asks of one node in a dynamic step
+// (a wall contact, docs/contact.md): by the step's end the node must have
+// moved at least `depth` (m) along `normal` from where it is at this
+// assembly (depth < 0: it may approach by -depth). The step's solve
+// (physics/unilateral.h) holds it as an equality while its multiplier
+// pushes and releases it when it would pull; the multiplier, the force the
+// constraint exerts along `normal` (N, >= 0), is written to *force.
+struct NodeConstraint {
+  int node = 0;
+  Vec3 normal = Vec3::UnitZ();
+  double depth = 0;
+  double* force = nullptr;
+};
+
 // Where an effect writes for one rod; all arrays have one entry per node.
 struct RodForces {
   std::vector<Vec6>& force;      // force (N, rows 0-2) and moment (N m, rows 3-5), global
@@ -62,6 +76,8 @@ struct RodForces {
   // dynamic step's block-tridiagonal solve holds neighbours only: nullptr,
   // and contacts lump what they can onto the diagonal blocks.
   std::vector<NodeCoupling>* coupling = nullptr;
+  // Unilateral constraints on nodes, set in a dynamic step only.
+  std::vector<NodeConstraint>* constraints = nullptr;
 };
 
 // What the workbench knows of a bench setup when it asks an effect how to

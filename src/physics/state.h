@@ -11,6 +11,7 @@
 #include "physics/contact/wall_load.h"
 #include "physics/model.h"
 #include "physics/math.h"
+#include "physics/unilateral.h"
 
 namespace coilsim {
 
@@ -37,6 +38,7 @@ struct RodWorkspace {
   std::vector<Pose> targets0;    // constraint targets at the start of the step
   std::vector<unsigned> fixedMask;  // (nnode) constrained DOFs (of active nodes)
   std::vector<Vec6> fixedValue;     // (nnode) prescribed increments of constrained DOFs
+  UnilateralScratch unilateral;     // the effects' node constraints and their solve (wall contact)
 };
 
 struct RodState {

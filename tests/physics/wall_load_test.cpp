@@ -85,7 +85,8 @@ struct PressedCantilever {
 constexpr double kLength = 0.01, kRadius = 0.15e-3, kOverlap = 0.1e-3, kTilt = 0.3;  // tan(alpha)
 constexpr int kBeams = 20;
 
-PressedCantilever pressCantilever(double stiffness_n_mm2) {
+// rigid: the wall holds the tip by a constraint (the stiffness then only sets friction, off here).
+PressedCantilever pressCantilever(double stiffness_n_mm2, bool rigid = false) {
   RodDef rod = test::clamped(
       test::straightRod(kLength, kBeams, test::platinum(), circularSection(kRadius, test::kPlatinumPoisson)));
   ModelDef def = test::modelOf({rod});
@@ -95,6 +96,7 @@ PressedCantilever pressCantilever(double stiffness_n_mm2) {
   wall.set("stiffness_per_rigidity_1_mm3", 0);  // the penalty exactly as given
   wall.set("friction_static", 0);
   wall.set("friction_dynamic", 0);
+  wall.set("rigid", rigid ? 1.0 : 0.0);
   def.effects.push_back(wall);
   // The wall rises along +x with slope kTilt; the rod lives above it.
   const double alpha = std::atan(kTilt);
@@ -158,6 +160,11 @@ TEST(WallLoad, ACantileverPressedOnAWallReadsBeamTheorysForceAndConvergesAsThePe
               f400 * 1e3, limit * 1e3);
   EXPECT_NEAR(f200, limit, 0.02 * limit);
   EXPECT_LT(std::abs(f400 - f200), 0.1 * f400);
+  // The wall held by a constraint has no penalty in series: beam theory's force outright.
+  const PressedCantilever held = pressCantilever(200, true);
+  std::printf("[ measured ] constraint: %.4f mN, fastest node %.2g m/s\n", held.load * 1e3, held.fastest);
+  EXPECT_LT(held.fastest, 1e-5) << "not settled";
+  EXPECT_NEAR(held.load, limit, 0.01 * limit);
 }
 
 // A clinician's scene: a soft helical coil (the default scene's: 0.012-inch
@@ -170,15 +177,16 @@ struct SettledSac {
   State settled;
 };
 
-SettledSac settleInSac(double pushed, double speed) {
-  SettledSac out;
+// The sac, the coil and its catheter, at time step h; the wall a penalty or (rigid) constraints.
+Model sacModel(double h, bool rigid = false) {
   ModelDef def;
   def.gravity = Vec3(0, 0, -9.81);
   def.effects.push_back(EffectRegistry::global().use("gravity"));
   def.effects.push_back(EffectRegistry::global().use("wall_contact"));
+  def.effects.back().set("rigid", rigid ? 1.0 : 0.0);
   def.effects.push_back(EffectRegistry::global().use("self_contact"));
   def.damping.massCoeff = 20;  // settles sooner; damping does not move an equilibrium
-  def.timeStep = 1e-3;
+  def.timeStep = h;
   def.obstacles.push_back(test::obstacleOf(test::icosphere(3.5e-3, 4)));  // 5120 triangles
   DeploymentDef d;
   d.coil = test::wireSpec(0.03, test::helixRest(7e-3, 0.3048e-3), 168e9, 0.38, 21450, 0);
@@ -189,14 +197,27 @@ SettledSac settleInSac(double pushed, double speed) {
   d.tip.normal = Vec3(1, 0, 0);
   d.catheterDrawLength = 0.5e-3;
   def.device = d;
-  out.model = compileModel(def);
-  State state = makeState(out.model);
-  resetDevice(out.model, state, 0.0, 0.0);
-  EXPECT_EQ(test::refusal(command(out.model, state, {DeviceCommand::Kind::Push, speed, pushed})), "");
-  const long pushing = std::lround(pushed / speed / out.model.timeStep);
-  for (long s = 0; s < pushing + 3500; ++s) EXPECT_TRUE(advance(out.model, state).ok()) << "step " << s;
+  return compileModel(def);
+}
+
+// Pushes `pushed` m at `speed` m/s, then `after` s with the pusher at rest.
+State pushIntoSac(const Model& model, double pushed, double speed, double after) {
+  State state = makeState(model);
+  resetDevice(model, state, 0.0, 0.0);
+  EXPECT_EQ(test::refusal(command(model, state, {DeviceCommand::Kind::Push, speed, pushed})), "");
+  const long steps = std::lround((pushed / speed + after) / model.timeStep);
+  for (long s = 0; s < steps; ++s) {
+    const StepReport r = advance(model, state);
+    EXPECT_TRUE(r.ok()) << "step " << s << ": " << (r.ok() ? "" : describe(*r.failure));
+    if (!r.ok()) break;
+  }
   EXPECT_FALSE(state.device.motion.moving());
-  out.settled = state;
+  return state;
+}
+
+SettledSac settleInSac(double pushed, double speed) {
+  SettledSac out{sacModel(1e-3), State{}};
+  out.settled = pushIntoSac(out.model, pushed, speed, 3.5);
   return out;
 }
 
@@ -235,6 +256,36 @@ TEST(WallLoad, ACoilSettledInASacReadsALoadThatAStifferWallDoesNotChange) {
   std::printf("[ measured ] Richardson limit %.4f mN\n", limit * 1e3);
   EXPECT_LT(std::abs(loads[1] - loads[0]), 0.1 * limit) << "the issue's criterion: doubling the wall changes the load by less than 10 %";
   EXPECT_NEAR(loads[2], limit + 0.5 * (loads[1] - limit), 0.01 * limit);
+}
+
+TEST(WallLoad, APushIntoASacReadsALargestLoadThatConvergesAsTheStepShrinks) {
+  // A clinician's push: the soft coil driven 12 mm into the closed 7 mm sac
+  // at 10 mm/s (displacement controlled: the pusher's advance is
+  // prescribed, as in timelines/push-*.json), its loops striking the wall
+  // and pressing on one another, then 0.1 s at rest. The wall holds each
+  // node by a constraint, which has no stiffness to refine: the step is
+  // (1, 0.5, 0.25 ms). Reference: Richardson's extrapolation of the three,
+  // with the order they show; halving the step must change the largest
+  // sustained load by less than 10 % of that limit.
+  const double steps[3] = {1e-3, 0.5e-3, 0.25e-3};
+  double loads[3];
+  for (int i = 0; i < 3; ++i) {
+    const State state = pushIntoSac(sacModel(steps[i], true), 0.012, 0.01, 0.1);
+    loads[i] = state.stats.wallLoad.max;
+    std::printf("[ measured ] h %.2f ms: largest sustained wall load %.4f mN at t = %.3f s, peak %.3f mN\n",
+                steps[i] * 1e3, loads[i] * 1e3, state.stats.wallLoad.timeOfMax, state.stats.wallLoad.peak * 1e3);
+  }
+  EXPECT_GT(loads[2], 1e-5) << "the coil must press on the wall (more than a node's weight)";
+  const double d1 = loads[0] - loads[1], d2 = loads[1] - loads[2];
+  // The observed order p from the ratio of successive differences (2^p); a
+  // ratio below 1 means no convergence, and Richardson does not apply.
+  const double ratio = std::abs(d2) > 0 ? d1 / d2 : INFINITY;
+  const double limit = std::isfinite(ratio) && ratio > 1 ? loads[2] + d2 / (ratio - 1) : loads[2];
+  std::printf("[ measured ] differences %.4f, %.4f mN (ratio %.2f); Richardson limit %.4f mN\n", d1 * 1e3, d2 * 1e3,
+              ratio, limit * 1e3);
+  EXPECT_LT(std::abs(d2), 0.1 * limit) << "halving the step from 0.5 to 0.25 ms";
+  EXPECT_LT(std::abs(d1), 0.1 * limit) << "halving the step from 1 to 0.5 ms";
+  EXPECT_LT(std::abs(loads[2] - limit), 0.1 * limit);
 }
 
 }  // namespace

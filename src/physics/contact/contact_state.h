@@ -40,6 +40,10 @@ struct ContactPoint {
   // end-of-step check still counts it as outside the step's linearisation.
   // Mutable: set through the const contact lists the effects read.
   mutable bool pressed[2] = {false, false};
+  // Line contacts held as constraints (ContactLaw::rigid): the multiplier,
+  // the force the wall exerts on node a, b, N: from the last step's
+  // matching contact at detection, then from each of the step's solves.
+  mutable double multiplier[2] = {0, 0};
   // Friction memory: elastic tangential displacement of the regularised
   // Coulomb spring (the stick point is contact point - slip) and whether the
   // contact slides (dynamic coefficient) or sticks (static).

@@ -42,6 +42,13 @@ NormalEval evalNormal(const ContactPoint& c, const RodState& rod, const ContactL
   }
   // Line contact: each node against the plane with half the segment's length.
   const double half = 0.5 * law.stiffness * (rod.x[c.segment + 1] - rod.x[c.segment]).norm();
+  if (law.rigid) {
+    // Held by constraints: the force is the last solve's multiplier.
+    if (c.node != 1 && c.multiplier[0] > 0) e.fa = c.multiplier[0], e.ka = half;
+    if (c.node != 0 && c.multiplier[1] > 0) e.fb = c.multiplier[1], e.kb = half;
+    e.touching = e.ka > 0 || e.kb > 0;
+    return e;
+  }
   const double pa = nodePenetration(c, rod.x, 0), pb = nodePenetration(c, rod.x, 1);
   if (c.node != 1 && (pa > 0 || c.closing[0] || c.pressed[0])) e.fa = half * std::max(0.0, pa), e.ka = half;
   if (c.node != 0 && (pb > 0 || c.closing[1] || c.pressed[1])) e.fb = half * std::max(0.0, pb), e.kb = half;
@@ -67,6 +74,13 @@ bool markClosing(ContactPoint& c, const RodState& rod, double h) {
 }
 
 void updateContact(ContactPoint& c, const ContactPoint* previous, const RodState& rod, const ContactLaw& law, double h) {
+  // A rigid wall's force is known after the solve: the last step's stands in (same segment: same nodes).
+  if (law.rigid && c.line && previous) {
+    const bool same = previous->segment == c.segment;
+    const double total = previous->multiplier[0] + previous->multiplier[1];
+    for (int end = 0; end < 2; ++end)
+      c.multiplier[end] = same ? previous->multiplier[end] : (c.node < 0 ? 0.5 : c.node == end ? 1.0 : 0.0) * total;
+  }
   const NormalEval n = evalNormal(c, rod, law);
   c.normalForce = n.force();
   if (n.touching && c.line) c.s = n.wb();  // the force centroid carries the friction
@@ -166,6 +180,57 @@ void applyStatic(std::span<const ContactPoint> contacts, const RodState& rod, co
   }
 }
 
+// Regularised Coulomb friction of contact c with normal evaluation n.
+void addFriction(const ContactPoint& c, const NormalEval& n, const Mat3& nn, const RodState& rod, const ContactLaw& law,
+                 double h, RodForces& out) {
+  const double normalForce = n.force();
+  if (normalForce <= 0) return;
+  const int node[2] = {c.segment, c.segment + 1};
+  // Friction: the stick spring at the force centroid, at the current
+  // positions (later Newton iterations see the step's motion), capped by
+  // Coulomb's cone; shared between the nodes like the normal force.
+  const double wb = c.line ? n.wb() : c.s, wa = 1 - wb;
+  const Mat3 tangent = Mat3::Identity() - nn;
+  const double kt = law.frictionStiffnessRatio * (n.ka + n.kb);
+  const Vec3 vrel = relativeVelocity(c, rod, wb);
+  const Vec3 moved = tangent * (along(rod.x, c, c.s) - c.at);
+  const Vec3 trial = c.slip + moved;
+  // Stick or slide is decided on where the spring will be at the end of
+  // the step: at the detection positions (the first Newton iteration) that
+  // is the start velocity carried over the step; later iterations have
+  // moved the nodes there already.
+  const Vec3 ahead = moved.isZero(0.0) ? Vec3(trial + h * (tangent * vrel)) : trial;
+  const double limit = (c.sliding ? law.frictionDynamic : law.frictionStatic) * normalForce;
+  Vec3 f;
+  Mat3 k, d = Mat3::Zero();
+  if (kt * ahead.norm() <= limit * (1 + 1e-9)) {
+    // Sticking: the spring and its damping are implicit.
+    const double dt = 2 * law.dampingRatio * std::sqrt(kt * nodeMass(c, rod, wa, wb));
+    f = -kt * trial - dt * (tangent * vrel);
+    k = law.implicitScale * kt * tangent;
+    d = law.implicitScale * dt * tangent;
+  } else {
+    // Sliding: the secant of Coulomb's law through the step's slip, a
+    // softer spring sigma = mu_d Fn / |slip ahead| from the stick point,
+    // which gives exactly mu_d Fn if the step slips as predicted and less
+    // if the solve stops the node. A constant mu_d Fn instead is explicit
+    // along the slip: on a 0.4 mg node it reverses a 5 mm/s slip within
+    // one step (mu Fn h / m is 0.5 m/s) and the contact chatters into a
+    // blow-up (and a direction-only stiffness of mu Fn / |elastic slip|
+    // across it made a stiff anchor, as strong as the stick spring).
+    const double slide = law.frictionDynamic * normalForce;
+    const double sigma = slide / ahead.norm();
+    f = -sigma * trial;
+    k = law.implicitScale * sigma * tangent;
+  }
+  out.force[node[0]].head<3>() += wa * f;
+  out.force[node[1]].head<3>() += wb * f;
+  out.stiffness[node[0]].topLeftCorner<3, 3>() += wa * k;
+  out.stiffness[node[1]].topLeftCorner<3, 3>() += wb * k;
+  out.damping[node[0]].topLeftCorner<3, 3>() += wa * d;
+  out.damping[node[1]].topLeftCorner<3, 3>() += wb * d;
+}
+
 }  // namespace
 
 void applyContacts(std::span<const ContactPoint> contacts, const EffectContext& ctx, const ContactLaw& law,
@@ -178,6 +243,18 @@ void applyContacts(std::span<const ContactPoint> contacts, const EffectContext& 
   }
   for (const ContactPoint& c : contacts) {
     const NormalEval n = evalNormal(c, rod, law);
+    if (law.rigid && c.line && out.constraints) {
+      // Each node held against the plane by the solve (physics/unilateral.h).
+      for (int end = 0; end < 2; ++end)
+        if (c.node < 0 || c.node == end)
+          out.constraints->push_back({c.segment + end, c.normal, nodePenetration(c, rod.x, end), &c.multiplier[end]});
+      if (n.touching && (law.frictionStatic > 0 || law.frictionDynamic > 0)) {
+        out.touchedMatrix = true;
+        const Mat3 nn = c.normal * c.normal.transpose();
+        addFriction(c, n, nn, rod, law, h, out);
+      }
+      continue;
+    }
     if (!n.touching) continue;
     const int node[2] = {c.segment, c.segment + 1};
     const double fe[2] = {n.fa, n.fb}, ke[2] = {n.ka, n.kb};
@@ -209,51 +286,7 @@ void applyContacts(std::span<const ContactPoint> contacts, const EffectContext& 
       out.damping[i].topLeftCorner<3, 3>() += law.implicitScale * damping * nn;
     }
     out.touchedMatrix = true;
-    const double normalForce = n.force();
-    if ((law.frictionStatic <= 0 && law.frictionDynamic <= 0) || normalForce <= 0) continue;
-    // Friction: the stick spring at the force centroid, at the current
-    // positions (later Newton iterations see the step's motion), capped by
-    // Coulomb's cone; shared between the nodes like the normal force.
-    const double wb = c.line ? n.wb() : c.s, wa = 1 - wb;
-    const Mat3 tangent = Mat3::Identity() - nn;
-    const double kt = law.frictionStiffnessRatio * (n.ka + n.kb);
-    const Vec3 vrel = relativeVelocity(c, rod, wb);
-    const Vec3 moved = tangent * (along(rod.x, c, c.s) - c.at);
-    const Vec3 trial = c.slip + moved;
-    // Stick or slide is decided on where the spring will be at the end of
-    // the step: at the detection positions (the first Newton iteration) that
-    // is the start velocity carried over the step; later iterations have
-    // moved the nodes there already.
-    const Vec3 ahead = moved.isZero(0.0) ? Vec3(trial + h * (tangent * vrel)) : trial;
-    const double limit = (c.sliding ? law.frictionDynamic : law.frictionStatic) * normalForce;
-    Vec3 f;
-    Mat3 k, d = Mat3::Zero();
-    if (kt * ahead.norm() <= limit * (1 + 1e-9)) {
-      // Sticking: the spring and its damping are implicit.
-      const double dt = 2 * law.dampingRatio * std::sqrt(kt * nodeMass(c, rod, wa, wb));
-      f = -kt * trial - dt * (tangent * vrel);
-      k = law.implicitScale * kt * tangent;
-      d = law.implicitScale * dt * tangent;
-    } else {
-      // Sliding: the secant of Coulomb's law through the step's slip, a
-      // softer spring sigma = mu_d Fn / |slip ahead| from the stick point,
-      // which gives exactly mu_d Fn if the step slips as predicted and less
-      // if the solve stops the node. A constant mu_d Fn instead is explicit
-      // along the slip: on a 0.4 mg node it reverses a 5 mm/s slip within
-      // one step (mu Fn h / m is 0.5 m/s) and the contact chatters into a
-      // blow-up (and a direction-only stiffness of mu Fn / |elastic slip|
-      // across it made a stiff anchor, as strong as the stick spring).
-      const double slide = law.frictionDynamic * normalForce;
-      const double sigma = slide / ahead.norm();
-      f = -sigma * trial;
-      k = law.implicitScale * sigma * tangent;
-    }
-    out.force[node[0]].head<3>() += wa * f;
-    out.force[node[1]].head<3>() += wb * f;
-    out.stiffness[node[0]].topLeftCorner<3, 3>() += wa * k;
-    out.stiffness[node[1]].topLeftCorner<3, 3>() += wb * k;
-    out.damping[node[0]].topLeftCorner<3, 3>() += wa * d;
-    out.damping[node[1]].topLeftCorner<3, 3>() += wb * d;
+    if (law.frictionStatic > 0 || law.frictionDynamic > 0) addFriction(c, n, nn, rod, law, h, out);
   }
 }
 

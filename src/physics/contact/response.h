@@ -35,10 +35,12 @@
 //    pulls with k times the gap when the prediction is wrong: it fed energy
 //    into the coil.) Walls also keep a skin (kWallSkin in detect.h) and the
 //    planes of concave neighbour faces (detect.h).
-//  - Why penalty and not constraints on the compliance (SOFA): it keeps the
-//    one O(n) block-tridiagonal solve per rod and needs no second solve or
-//    LCP, and the measured penetration stays far below the 10 % of the wire
-//    radius the tests require (docs/contact.md).
+//  - Walls in a dynamic step may instead be a unilateral constraint per
+//    node and plane (ContactLaw::rigid, physics/unilateral.h), solved in
+//    the same O(n) band: the penalty's largest load during a push followed
+//    its stiffness (a strike bounces on a spring the step meets only at its
+//    start), the constraint's converges with the step (docs/contact.md;
+//    not yet the default: friction under it fails the Coulomb tests).
 //  - What the diagonal blocks cannot hold: the coupling between the two
 //    segments of a self or rod contact (distant nodes: outside the block
 //    tridiagonal band). Each side treats the other as moving with its
@@ -80,6 +82,13 @@ struct ContactLaw {
   // Pairs: the contact distance over r1 + r2. A wound coil's outer radius
   // is larger than the radius of the solid wire that has its stiffness.
   double radiusScale = 1;
+  // Walls (line contacts) in a dynamic step: each node held by a unilateral
+  // constraint against its planes instead of the penalty (physics/
+  // unilateral.h; docs/contact.md, "Why a constraint per node against the
+  // wall"); the normal force is the constraint's multiplier, and
+  // `stiffness` only sets the friction's stick spring. Static solves keep
+  // the smoothed penalty.
+  bool rigid = false;
 };
 
 struct NormalEval {
@@ -93,7 +102,8 @@ struct NormalEval {
   }
 };
 
-// Normal penalty of contact c at the rod's current positions.
+// Normal penalty of contact c at the rod's current positions (a rigid line
+// contact: its multipliers, with the penalty's stiffness for friction).
 NormalEval evalNormal(const ContactPoint& c, const RodState& rod, const ContactLaw& law);
 
 // Sets c.closing from the rod's (and the other surface's) velocities at the

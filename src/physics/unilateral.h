@@ -1,0 +1,74 @@
+#pragma once
+// Unilateral constraints on single nodes inside the one block-tridiagonal
+// solve of a rod's implicit step (wall contacts held as constraints,
+// docs/contact.md "Why a constraint per node against the wall").
+//
+// A constrained node's velocity change dv_i is split along the constraint
+// normals N (3 x k, k <= 3 independent directions) and across them,
+// dv_i = u_i + P_i y_i, with u_i fixing N^T dv_i to the targets and
+// P_i = I - Q Q^T (Q an orthonormal basis of N) the free part. The system
+// A dv = b then becomes (Pi A Pi + (I - Pi)) y = Pi (b - A u), a change of
+// variables per node: every block stays where it was, so the matrix is
+// still block tridiagonal, symmetric positive definite, and one O(n) block
+// Cholesky solves it (the filtered system of Baraff and Witkin, SIGGRAPH
+// 1998, solved directly instead of by conjugate gradients). The reaction
+// (A dv - b)_i lies in the span of N; its components are the multipliers
+// times h. Active set: a constraint is held while its multiplier pushes,
+// released when it pulls (only once no node is carried past a constraint),
+// and taken in when the solve carries its node past it; repeated until
+// nothing changes (kMaxActiveSetPasses), else a Failure.
+#include <optional>
+#include <vector>
+
+#include "physics/block_tridiagonal.h"
+#include "physics/effect.h"
+#include "physics/failure.h"
+
+namespace coilsim {
+
+// Solves of one step at most before the active set is declared unsettled.
+inline constexpr int kMaxActiveSetPasses = 16;
+
+// What the constrained solve keeps per rod; sized on first use, reused.
+struct UnilateralScratch {
+  using Normals = Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 3>;
+  using Small = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
+  // The held, independent constraints of one node: their normals, targets
+  // (normal . dv, m/s) and indices.
+  struct NodeSet {
+    Normals n;
+    Small target;
+    int index[3] = {-1, -1, -1};
+    int k = 0;
+  };
+  std::vector<NodeConstraint> constraints;  // this assembly's, in the order the effects gave them
+  std::vector<char> active;                 // (constraints) held; kept over the step's Newton iterations
+  std::vector<char> used;                   // (constraints) held and independent of the node's others
+  std::vector<double> force;                // (constraints) multipliers of the last solve, N
+  std::vector<double> target;               // (constraints) least normal . dv, m/s
+  std::vector<int> order;                   // constraint indices sorted by node
+  BlockTridiagonal free;                    // the system before the constraints
+  std::vector<Vec6> freeRhs;
+  std::vector<Vec3> known;                  // (nnode) u: the velocity change fixed along the normals
+  std::vector<Mat3> projector;              // (nnode) P_i (identity for a free node)
+  std::vector<NodeSet> sets;                // this solve's nodes with held constraints
+  int passes = 0;                           // solves in the last call
+};
+
+// Solves A dv = rhs (rhs becomes dv) for the leading n nodes with the
+// constraints in s.constraints for a step of length h: constraint j asks
+// normal . dv >= depth / h of its node, less normal . v when
+// `startVelocity` is given ((v, w) per node: the step's first Newton
+// iteration, whose positions are the start's and move by h (v + dv); the
+// active set then starts from the nodes that velocity carries in, later
+// iterations from the last one's). Nodes with a prescribed
+// translation (fixedMask bits 0-2) are not constrained. Writes each
+// constraint's multiplier to *force (0 when not held). On failure (a matrix
+// that does not factorise, an active set that does not settle) returns
+// the Failure (kind SolverFailure; the step is then taken in substeps by
+// the caller) and leaves rhs unusable.
+std::optional<Failure> solveUnilateral(BlockTridiagonal& A, std::vector<Vec6>& rhs, int n, double h,
+                                       const std::vector<Vec6>* startVelocity, const std::vector<unsigned>& fixedMask,
+                                       BlockTridiagonalSolver& solver, UnilateralScratch& s);
+
+}  // namespace coilsim
