@@ -42,7 +42,7 @@ struct AutoDeployOptions {
   double afterDetach = 0.2;      // s: longest simulated after detach
   // m/s: the settling before detach, and the run after it, end once no node
   // of the coil has moved faster than this for decayWindow; 0: always the whole time.
-  double settleSpeed = 2e-3;
+  double settleSpeed = 0;
   double maxTime = 0;            // s: give up (reported) beyond this; 0: 60 s + 4 L / pushSpeed
   double wallForceThreshold = 0.05;  // N: wall load counted as "above the safety threshold"
 };
