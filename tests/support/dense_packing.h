@@ -15,6 +15,7 @@
 #include "physics/rest_shape.h"
 #include "physics/section.h"
 #include "physics/state.h"
+#include "support/segment_distance.h"
 #include "support/meshes.h"
 
 namespace coilsim::test::dense {
@@ -127,23 +128,7 @@ inline double netWeight(const ModelDef& def) {
   return (kDensity * kArea - kMedium * M_PI * kWireRadius * kWireRadius) * 9.81 * coilLength(def);
 }
 
-// Distance between segments p0-p1 and q0-q1 (Ericson, Real-Time Collision
-// Detection 5.1.9, clamped; the textbook form, not the contact code's).
-inline double segmentDistance(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
-  const Vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
-  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r), c = d1.dot(r), b = d1.dot(d2);
-  const double denom = a * e - b * b;
-  double s = denom > 1e-30 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
-  double t = (b * s + f) / e;
-  if (t < 0) {
-    t = 0;
-    s = std::clamp(-c / a, 0.0, 1.0);
-  } else if (t > 1) {
-    t = 1;
-    s = std::clamp((b - c) / a, 0.0, 1.0);
-  }
-  return (p0 + s * d1 - (q0 + t * d2)).norm();
-}
+using test::segmentDistance;  // tests/support/segment_distance.h
 
 struct Depths {
   double pair = 0;  // deepest overlap of two wires (2 r - centre-line distance), m
