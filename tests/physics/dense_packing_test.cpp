@@ -11,9 +11,10 @@
 //   contacts off the same checks fail (the control).
 // - at rest, the reported wall load (State::stats.wallLoad, the sustained
 //   figure) converges as the wall and coil-coil penalties stiffen from one
-//   settled State (Richardson in 1 / k), and the wall's total normal force
-//   carries the coils' weight less their upthrust (statics: the external
-//   forces on a coil at rest sum to zero; the pair contacts are internal).
+//   settled State (Richardson in 1 / k, at two settled States), and the
+//   wall's total normal force against the coils' weight less their
+//   upthrust (statics: the external forces on a coil at rest sum to zero;
+//   the pair contacts are internal) is printed, not yet asserted.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -131,45 +132,52 @@ TEST(DensePacking, TheWallLoadAtRestConvergesUnderPenaltyRefinement) {
   ModelDef def = packedSac(true);
   def.damping.massCoeff = 20;
   Model model = compileModel(def);
-  State settled = makeState(model);
-  for (int k = 0; k < 1000; ++k) ASSERT_TRUE(step(model, settled).ok()) << "settling, step " << k;
   const double weight = netWeight(def);
-  double loads[3];
-  Vec3 wall[3];
-  for (int i = 0; i < 3; ++i) {
-    // From the one settled State, 0.2 s more with every penalty at 1, 2, 4
-    // times its registered value (separately settled packings would end in
-    // different shapes: docs/contact.md).
-    scalePenalties(model, double(1 << i));
-    State s = settled;
-    for (int k = 0; k < 200; ++k) ASSERT_TRUE(step(model, s).ok()) << "x" << (1 << i) << " step " << k;
-    loads[i] = s.stats.wallLoad.now;
-    wall[i] = wallNormalTotal(s);
-    std::printf("[ measured ] penalties x%d: sustained wall load %.4f mN, fastest node %.3g mm/s, wall's total "
-                "normal force (%.4f, %.4f, %.4f) mN against weight less upthrust %.4f mN\n",
-                1 << i, loads[i] * 1e3, fastestNode(s) * 1e3, wall[i].x() * 1e3, wall[i].y() * 1e3, wall[i].z() * 1e3,
-                weight * 1e3);
-    EXPECT_LT(fastestNode(s), 1e-3) << "x" << (1 << i) << ": not at rest, the load would be a transient's";
+  // The settled packing depends on every rounding on the way (a build at
+  // another optimisation level settles into another one), so the check is
+  // made on two settled States, 0.9 s and 1.2 s, each its own packing.
+  State settled = makeState(model);
+  int stepped = 0;
+  for (const int settle : {900, 1200}) {
+    for (; stepped < settle; ++stepped) ASSERT_TRUE(step(model, settled).ok()) << "settling, step " << stepped;
+    // From the one settled State, 0.2 s more with every penalty at 1/2, 1
+    // and 2 times its registered value (separately settled packings would
+    // end in different shapes: docs/contact.md). Not 4 times: at this step
+    // the pair contacts' lumped stiffness is then near its stability limit
+    // and a settled packing can erupt by itself (docs/contact.md).
+    double loads[3];
+    Vec3 wall[3];
+    for (int i = 0; i < 3; ++i) {
+      const double factor = 0.5 * double(1 << i);
+      scalePenalties(model, factor);
+      State s = settled;
+      for (int k = 0; k < 200; ++k) ASSERT_TRUE(step(model, s).ok()) << "x" << factor << " step " << k;
+      loads[i] = s.stats.wallLoad.now;
+      wall[i] = wallNormalTotal(s);
+      std::printf("[ measured ] settled %.1f s, penalties x%g: sustained wall load %.4f mN, fastest node %.3g mm/s, "
+                  "wall's total normal force (%.4f, %.4f, %.4f) mN against weight less upthrust %.4f mN, ratio %.3f\n",
+                  settle * def.timeStep, factor, loads[i] * 1e3, fastestNode(s) * 1e3, wall[i].x() * 1e3,
+                  wall[i].y() * 1e3, wall[i].z() * 1e3, weight * 1e3, wall[i].z() / weight);
+      EXPECT_LT(fastestNode(s), 1e-3) << "x" << factor << ": not at rest, the load would be a transient's";
+    }
+    scalePenalties(model, 1);
+    // The issue's criterion: doubling the registered stiffness changes the
+    // figure by less than 10 %.
+    EXPECT_LT(std::abs(loads[2] - loads[1]), 0.1 * loads[2]) << "settled " << settle << " steps";
+    // A load carried by the wires' elasticity and weight, the penalty's
+    // compliance in series: its error is first order in 1 / k. Richardson
+    // from k/2 and k gives the limit, and 2k must lie where that predicts,
+    // within 2 % of the limit (the cantilever's tolerance, WallLoad tests).
+    const double limit = 2 * loads[1] - loads[0], predicted = 0.5 * (limit + loads[1]);
+    std::printf("[ measured ] settled %.1f s: Richardson limit %.4f mN, predicted at 2k %.4f mN, got %.4f mN\n",
+                settle * def.timeStep, limit * 1e3, predicted * 1e3, loads[2] * 1e3);
+    EXPECT_NEAR(loads[2], predicted, 0.02 * std::abs(limit)) << "settled " << settle << " steps";
   }
-  scalePenalties(model, 1);
-  // The issue's criterion: from 2k to 4k the figure changes by less than 10 %.
-  EXPECT_LT(std::abs(loads[2] - loads[1]), 0.1 * loads[2]);
-  // A load carried by the wires' elasticity and weight, the penalty's
-  // compliance in series: its error is first order in 1 / k. Richardson
-  // from k and 2k gives the limit, and 4k must lie where that predicts,
-  // within 2 % of the limit (the cantilever's tolerance, WallLoad tests).
-  const double limit = 2 * loads[1] - loads[0], predicted = 0.5 * (limit + loads[1]);
-  std::printf("[ measured ] Richardson limit %.4f mN, predicted at 4k %.4f mN, got %.4f mN\n", limit * 1e3,
-              predicted * 1e3, loads[2] * 1e3);
-  EXPECT_NEAR(loads[2], predicted, 0.02 * std::abs(limit));
-  // Statics is not asserted here: at the 1 ms step the wall carries 1.8-1.9
+  // Statics is not asserted here: at the 1 ms step the wall carries 1.6-1.9
   // times the weight less upthrust (the pair contacts' lumped stiffness
   // anchors the packing and it creeps for seconds): docs/contact.md, Known
   // problems, "A dense packing at rest presses the wall with more than its
-  // weight". It is printed so that the figure is seen in every run.
-  for (int i = 0; i < 3; ++i)
-    std::printf("[ measured ] x%d: wall's total normal force / (weight less upthrust) = %.3f\n", 1 << i,
-                wall[i].z() / weight);
+  // weight". The ratio is printed above so that it is seen in every run.
 }
 
 }  // namespace
