@@ -31,24 +31,6 @@ using namespace test::dense;
 
 constexpr int kEvery = 10;  // steps between the independent checks
 
-// A fifth coil of the same wire, straight, `length` long, held at its
-// proximal end (node 0, as a pusher holds a coil), its distal tip at `tip`
-// pointing along `along`.
-RodDef pushedCoil(const Vec3& tip, const Vec3& along, double length) {
-  RodDef r;
-  r.name = "pushed";
-  r.length = length;
-  r.beams = int(std::lround(length / kBeam));
-  r.rest = makeStraight(length, r.beams);
-  r.placement.position = tip - length * along;
-  r.placement.direction = along;
-  r.placement.normal = along.unitOrthogonal();
-  r.material = {kYoung, shearModulusOf(kYoung, 0.38), kDensity};
-  r.section = coilSection();
-  r.constraints.push_back({0, kAllDofs});
-  return r;
-}
-
 struct DynamicRun {
   Depths deepest;   // over every checked step
   Depths settled;   // at the end of the settling, before the push

@@ -116,6 +116,24 @@ inline ModelDef packedSac(bool frictionlessWall) {
   return def;
 }
 
+// A straight coil of `length` whose proximal node is held (all its
+// degrees of freedom), lying along `along` with its free tip at `tip`: the
+// coil pushed into the packing (its hold driven by a constraint velocity).
+inline RodDef pushedCoil(const Vec3& tip, const Vec3& along, double length) {
+  RodDef r;
+  r.name = "pushed";
+  r.length = length;
+  r.beams = int(std::lround(length / kBeam));
+  r.rest = makeStraight(length, r.beams);
+  r.placement.position = tip - length * along;
+  r.placement.direction = along;
+  r.placement.normal = along.unitOrthogonal();
+  r.material = {kYoung, shearModulusOf(kYoung, 0.38), kDensity};
+  r.section = coilSection();
+  r.constraints.push_back({0, kAllDofs});
+  return r;
+}
+
 inline double coilLength(const ModelDef& def) {
   double l = 0;
   for (const RodDef& r : def.rods) l += r.length;

@@ -35,6 +35,63 @@ double segmentSize(const RodState& r, int e) {
 }
 double segmentSweep(const RodState& r, int e, double sweep) { return sweep * std::max(r.v[e].norm(), r.v[e + 1].norm()); }
 
+// A segment's reach in the pair search: half its length, its contact
+// radius scaled by max(1, radiusScale), and what it sweeps in `sweep` s.
+double reachOf(const RodState& r, int e, double scale, double sweep) {
+  return segmentSize(r, e) + (scale - 1) * std::max(r.nodes[e].radius, r.nodes[e + 1].radius) + segmentSweep(r, e, sweep);
+}
+
+// Whether the candidates `c` still hold every pair the grid would find now
+// (scratch.h, PairCandidates); fills c.midNow and c.extentNow.
+bool stillHolds(PairCandidates& c, const State& state, bool sameRod, double margin, double scale, double sweep) {
+  if (!c.valid || c.margin != margin || c.radiusScale != scale || c.nodes.size() != state.rods.size()) return false;
+  double size = 0;
+  for (size_t k = 0; k < state.rods.size(); ++k) {
+    const RodState& r = state.rods[k];
+    const int nodes = inSearch(r, sameRod) ? r.activeNodes : 0;
+    if (nodes != c.nodes[k] || char(r.asleep) != c.asleep[k]) return false;
+    for (int e = 0; e + 1 < nodes; ++e) size = std::max(size, segmentSize(r, e));
+  }
+  c.midNow.resize(c.mid.size());
+  c.extentNow.resize(c.extent.size());
+  for (size_t k = 0; k < state.rods.size(); ++k) {
+    const RodState& r = state.rods[k];
+    for (int e = 0; e + 1 < c.nodes[k]; ++e) {
+      const size_t i = size_t(c.first[k] + e);
+      // A fast segment is paired outside the grid (forEachNearPair).
+      if (segmentSweep(r, e, sweep) > 0.25 * size) return false;
+      c.midNow[i] = 0.5 * (r.x[e] + r.x[e + 1]);
+      c.extentNow[i] = reachOf(r, e, scale, sweep);
+      if ((c.midNow[i] - c.mid[i]).norm() + std::max(0.0, c.extentNow[i] - c.extent[i]) > 0.5 * c.skin) return false;
+    }
+  }
+  return true;
+}
+
+// Records where the searched segments are as `c` is built with `skin`.
+void startCandidates(PairCandidates& c, const State& state, bool sameRod, double margin, double scale, double sweep,
+                     double skin) {
+  c.valid = false;
+  c.margin = margin, c.radiusScale = scale, c.skin = skin;
+  c.first.assign(state.rods.size(), 0);
+  c.nodes.assign(state.rods.size(), 0);
+  c.asleep.assign(state.rods.size(), 0);
+  c.mid.clear();
+  c.extent.clear();
+  c.found[0].clear();
+  c.found[1].clear();
+  for (size_t k = 0; k < state.rods.size(); ++k) {
+    const RodState& r = state.rods[k];
+    c.first[k] = int(c.mid.size());
+    c.nodes[k] = inSearch(r, sameRod) ? r.activeNodes : 0;
+    c.asleep[k] = char(r.asleep);
+    for (int e = 0; e + 1 < c.nodes[k]; ++e) {
+      c.mid.push_back(0.5 * (r.x[e] + r.x[e + 1]));
+      c.extent.push_back(reachOf(r, e, scale, sweep));
+    }
+  }
+}
+
 // Calls visit(ri, si, rj, sj) once for every pair of segments (ri before rj,
 // or si < sj - 1 in one rod) that can come within `margin` of each other
 // in `sweep` s: their midpoints no farther apart than the reach of the two
@@ -55,9 +112,39 @@ double segmentSweep(const RodState& r, int e, double sweep) { return sweep * std
 // into two parts of about equal segments, visited on two threads: visit then
 // gets the part (0 or 1; the fast segments' pairs are part 0) and must only
 // write what that part owns.
+// With `candidates`, the pairs are kept from step to step (a Verlet list,
+// scratch.h): while they still hold, only they are measured against the
+// reaches and the margin, the grid is neither sorted nor walked; when they
+// no longer do, the grid is searched with a skin of a quarter of the
+// largest segment's size added to the margin and its pairs kept. They are
+// not kept while a segment is fast. The pairs visited are those of the grid
+// search without them: the same contacts, bit for bit.
 template <class Visit>
 void forEachNearPair(const Model& model, const State& state, bool sameRod, double margin, double sweep,
-                     double radiusScale, Visit visit, DetectionThreads* threads = nullptr) {
+                     double radiusScale, Visit visit, DetectionThreads* threads = nullptr,
+                     PairCandidates* candidates = nullptr) {
+  const double scale = std::max(1.0, radiusScale);
+  if (candidates && stillHolds(*candidates, state, sameRod, margin, scale, sweep)) {
+    PairCandidates& c = *candidates;
+    ++c.reuses;
+    const long n = long(c.pairs.size());
+    const auto visitPart = [&](int part, ContactScratch&) {
+      for (long q = part ? n / 2 : 0, end = part ? n : n / 2; q < end; ++q) {
+        const CandidatePair& p = c.pairs[size_t(q)];
+        const size_t i = size_t(c.first[p.ki] + p.si), j = size_t(c.first[p.kj] + p.sj);
+        const double apart = c.extentNow[i] + c.extentNow[j] + margin;
+        if ((c.midNow[j] - c.midNow[i]).squaredNorm() > apart * apart) continue;
+        visit(part, p.ki, p.si, p.kj, p.sj);
+      }
+    };
+    if (threads) {
+      threads->run(threads->splits(long(c.mid.size())), state.contactScratch, visitPart);
+    } else {
+      visitPart(0, state.contactScratch);
+      visitPart(1, state.contactScratch);
+    }
+    return;
+  }
   std::vector<GridSegment>& grid = state.contactScratch.grid;
   std::vector<GridSegment>& fast = state.contactScratch.fast;
   grid.clear();
@@ -78,7 +165,13 @@ void forEachNearPair(const Model& model, const State& state, bool sameRod, doubl
       else reach = std::max(reach, segmentSize(r, e) + swept);
     }
   }
-  const double cell = 2 * reach + margin, scale = std::max(1.0, radiusScale);
+  // Kept only while no segment is fast; a quarter of the largest segment's
+  // size of skin lets them hold for a few micrometres' moves per step.
+  PairCandidates* keep = fast.empty() ? candidates : nullptr;
+  if (candidates) candidates->valid = false;
+  const double skin = keep ? 0.25 * size : 0.0, searched = margin + skin;
+  if (keep) startCandidates(*keep, state, sameRod, margin, scale, sweep, skin);
+  const double cell = 2 * reach + searched;
   if (!(cell > 0) || !std::isfinite(cell)) return;  // no rod takes part (or positions are not finite)
   const auto isFast = [&](int k, int e) {
     return std::binary_search(fast.begin(), fast.end(), GridSegment{0, k, e}, [](const GridSegment& a, const GridSegment& b) {
@@ -116,8 +209,7 @@ void forEachNearPair(const Model& model, const State& state, bool sameRod, doubl
     for (int e = 0; e + 1 < r.activeNodes; ++e) {
       if (!fast.empty() && isFast(int(k), e)) continue;
       const Vec3 mid = 0.5 * (r.x[e] + r.x[e + 1]), m = mid / cell;
-      const double extent = segmentSize(r, e) + (scale - 1) * std::max(r.nodes[e].radius, r.nodes[e + 1].radius) +
-                            segmentSweep(r, e, sweep);
+      const double extent = reachOf(r, e, scale, sweep);
       grid.push_back({cellKey(cellIndex(m.x()), cellIndex(m.y()), cellIndex(m.z())), int(k), e, mid, extent});
     }
   }
@@ -174,8 +266,13 @@ void forEachNearPair(const Model& model, const State& state, bool sameRod, doubl
               if (catheter && model.rods[gj.rod].role == RodRole::Catheter) continue;
               // Two sleeping rods do not move: nothing between them changes.
               if (asleep && state.rods[gj.rod].asleep) continue;
-              const double apart = gi.extent + gj.extent + margin;
-              if ((gj.mid - gi.mid).squaredNorm() > apart * apart) continue;
+              const double apart = gi.extent + gj.extent + searched, d2 = (gj.mid - gi.mid).squaredNorm();
+              if (d2 > apart * apart) continue;
+              if (keep) {
+                keep->found[part].push_back({gi.rod, gi.segment, gj.rod, gj.segment});
+                const double tight = gi.extent + gj.extent + margin;
+                if (d2 > tight * tight) continue;
+              }
               visit(part, gi.rod, gi.segment, gj.rod, gj.segment);
             }
         }
@@ -189,6 +286,12 @@ void forEachNearPair(const Model& model, const State& state, bool sameRod, doubl
   } else {
     visitCells(0, state.contactScratch);
     visitCells(1, state.contactScratch);
+  }
+  if (keep) {
+    keep->pairs.clear();
+    for (const std::vector<CandidatePair>& f : keep->found) keep->pairs.insert(keep->pairs.end(), f.begin(), f.end());
+    keep->valid = true;
+    ++keep->builds;
   }
 }
 
@@ -287,7 +390,8 @@ void detectRodContacts(const Model& model, State& state, double h, bool sameRod,
           if (twoThreads) scratch.parts[part].pairs.push_back({ki, si, kj, sj, p});
           else add(ki, si, kj, sj, p);
         },
-        &scratch.threads);
+        &scratch.threads,
+        scratch.keepPairCandidates ? (sameRod ? &scratch.selfCandidates : &scratch.rodCandidates) : nullptr);
   for (const DetectionPart& part : scratch.parts)
     for (const FoundPair& f : part.pairs) add(f.ki, f.si, f.kj, f.sj, f.p);
   for (size_t k = 0; k < state.rods.size(); ++k) {
