@@ -11,6 +11,12 @@
 //     docs/probes/dense_packing_probe.cpp build/src/physics/libcoilsim_physics.a -lfcl -o /tmp/dense_probe
 //   /tmp/dense_probe [frictionless wall: 1 (default) or 0] [time step ms: 1] [settling s: 1]
 // DENSE_PROBE_SKIP_TABLE=1 leaves out the table, DENSE_PROBE_FRICTIONLESS_PAIRS=1 takes the coil-coil friction off.
+// DENSE_PROBE_ENERGY=s: instead of the table, after the settling, s seconds
+// more with an energy account of every step (support/step_energy.h: the work
+// of each force term, and what the normal laws put in beyond their work),
+// one line per 10 ms and one per step whose kinetic energy doubled; so the
+// eruption docs/contact.md describes (1 ms, 1x, settled 3.7 s) is
+//   DENSE_PROBE_ENERGY=0.15 /tmp/dense_probe 1 1 3.7
 #include <cstdio>
 #include <cstdlib>
 
@@ -18,6 +24,7 @@
 #include "physics/contact/detect.h"
 #include "physics/integrator.h"
 #include "support/dense_packing.h"
+#include "support/step_energy.h"
 
 using namespace coilsim;
 using namespace coilsim::test::dense;
@@ -38,6 +45,30 @@ Vec3 effectTotal(const Model& model, const State& state, const std::string& only
       f += (a.rods[r].work.force[size_t(i)] - b.rods[r].work.force[size_t(i)]).head<3>();
   }
   return f;
+}
+
+// Steps `state` on for `seconds`, printing the energy account (pJ) of each
+// step: every 10 ms, and at every step whose kinetic energy doubled.
+void energyAccount(const Model& model, State& state, double seconds) {
+  const double h = model.timeStep, pJ = 1e12;
+  std::printf("| t ms | kinetic | beams | mass damping | wall normal | self normal | self friction | rod normal | "
+              "rod friction | gravity + buoyancy | pair normal: work + stored | wall normal: work + stored | "
+              "account's error | fastest node mm/s |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  const int steps = int(std::lround(seconds / h)), every = int(std::lround(0.01 / h));
+  for (int k = 1; k <= steps; ++k) {
+    const State before = state;
+    const long substepped = state.substepped;
+    step(model, state);
+    const test::StepEnergy e = test::accountStep(model, before, state);
+    const bool jump = e.kinetic1 > 2 * e.kinetic0 && e.kinetic1 * pJ > 1e-3;
+    if (k % every && !jump) continue;
+    std::printf("| %.0f%s | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.3g | %.2g | %.3g |\n",
+                state.time * 1e3, state.substepped != substepped ? " (substeps: account n/a)" : "", e.kinetic1 * pJ,
+                e.at("beams") * pJ, e.at("mass damping") * pJ, e.at("wall normal") * pJ, e.at("self normal") * pJ,
+                e.at("self friction") * pJ, e.at("rod normal") * pJ, e.at("rod friction") * pJ,
+                (e.at("gravity") + e.at("buoyancy")) * pJ, e.pairNormalInput() * pJ, e.wallNormalInput() * pJ,
+                e.balance * pJ, fastestNode(state) * 1e3);
+  }
 }
 
 int main(int argc, char** argv) {
@@ -62,6 +93,10 @@ int main(int argc, char** argv) {
     if (k % int(std::lround(0.5 / h)) == 0)
       std::printf("settling, t = %.1f s: wall's total normal force / (weight - upthrust) %.3f, sustained load %.4f mN, fastest node %.3g mm/s\n",
                   k * h, wallNormalTotal(settled).z() / weight, settled.stats.wallLoad.now * 1e3, fastestNode(settled) * 1e3);
+  }
+  if (const char* seconds = std::getenv("DENSE_PROBE_ENERGY")) {
+    energyAccount(model, settled, std::atof(seconds));
+    return 0;
   }
   const test::ConvexCavity sac(sacWall());
   std::printf("%s wall, h %.3g ms, %.1f mm in %zu coils; weight less upthrust %.4f mN; settled 1 s: %ld refused, %ld in substeps\n",
