@@ -1,5 +1,7 @@
 #include "app/sac_drawing.h"
 
+#include "ui/contact_overlay.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -65,6 +67,10 @@ std::vector<ui::LegendEntry> sacLegend(const planning::Sac& sac) {
   // In X-ray the wall is the contrast it holds; the neck plane a line across it.
   l.push_back({kWallColour, vessel ? "sac and parent vessel wall" : "sac wall", M::Vessel});
   l.push_back({kNeckColour, "neck plane (the ostium)", M::VesselOutline});
+  // The contact markers (ui/contact_overlay.h): their arrows' lengths are
+  // relative, the longest the largest force drawn.
+  l.push_back({ui::kWallContactColour, "wall contact, arrow: its force"});
+  l.push_back({ui::kCoilContactColour, "coil-coil contact, arrow: its force"});
   if (!vessel) l.push_back({Colour(0, 0, 0, 0), "no parent vessel in this case: its side is beyond the neck plane"});
   return l;
 }

@@ -34,7 +34,7 @@ void visit(const Rod& r, double radius, ContactSummary& sum, double& maxForce, D
         DrawPoint p;
         p.position = (1 - c.s) * r.x[size_t(c.segment)] + c.s * r.x[size_t(c.segment) + 1] - radius * c.normal;
         p.vector = c.normal * (c.normalForce * scale);
-        p.colour = list == lists ? Colour(1.0f, 0.85f, 0.1f, 1.0f) : Colour(0.2f, 0.9f, 1.0f, 1.0f);
+        p.colour = list == lists ? kWallContactColour : kCoilContactColour;
         out->points.push_back(p);
       }
     }

@@ -17,8 +17,13 @@ struct ContactSummary {
   double wallLoad = 0, wallLoadMax = 0;
 };
 
-// Appends one point per contact (wall contacts yellow, self and rod
-// contacts cyan) with an arrow along the force on the rod, the largest
+// The markers' colours: wall contacts yellow, contacts between coils (self
+// and rod) green, apart from the neck plane's light blue (app/sac_drawing)
+// that they are drawn beside; the legends name both.
+inline const Colour kWallContactColour(1.0f, 0.85f, 0.1f, 1.0f);
+inline const Colour kCoilContactColour(0.3f, 0.95f, 0.3f, 1.0f);
+
+// Appends one point per contact (kWallContactColour or kCoilContactColour) with an arrow along the force on the rod, the largest
 // `arrowLength` m long. The point is where the rod touches: on its surface,
 // on the side the force comes from (the centre line minus the contact
 // normal times the rod's radius), so that a marker drawn there no larger

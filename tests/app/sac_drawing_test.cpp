@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "ui/contact_overlay.h"
+
 #include <cmath>
 #include <memory>
 
@@ -52,6 +54,26 @@ TEST(SacDrawing, ABareSphereHasNoParentVesselAndTheLegendSaysSo) {
   bool said = false;
   for (const ui::LegendEntry& e : sacLegend(sac)) said |= e.text.find("no parent vessel") != std::string::npos;
   EXPECT_TRUE(said);
+}
+
+// The pictures draw contact markers (ui/contact_overlay.h): the legend
+// names both kinds with the colours they are drawn in, and no two entries
+// share a colour (the coil-coil markers were once the neck plane's blue).
+TEST(SacDrawing, TheLegendNamesTheContactMarkersInTheirOwnColours) {
+  const std::vector<ui::LegendEntry> legend = sacLegend(sphereSac(3.5e-3, 2.5e-3, 3));
+  int wall = 0, coil = 0;
+  for (const ui::LegendEntry& e : legend) {
+    wall += e.colour == ui::kWallContactColour && e.text.find("wall contact") != std::string::npos;
+    coil += e.colour == ui::kCoilContactColour && e.text.find("coil-coil contact") != std::string::npos;
+  }
+  EXPECT_EQ(wall, 1);
+  EXPECT_EQ(coil, 1);
+  for (size_t i = 0; i < legend.size(); ++i)
+    for (size_t j = i + 1; j < legend.size(); ++j) {
+      if (legend[i].colour.w() == 0 || legend[j].colour.w() == 0) continue;  // text lines
+      const Eigen::Vector3f a = legend[i].colour.head<3>(), b = legend[j].colour.head<3>();
+      EXPECT_GT((a - b).norm(), 0.25f) << legend[i].text << " and " << legend[j].text << " look alike";
+    }
 }
 
 TEST(SacDrawing, MoreVolumeBeyondTheNeckThanHalfTheSacCountsAsAVessel) {
