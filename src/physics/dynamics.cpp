@@ -92,8 +92,8 @@ StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, d
     }
     if (!w.unilateral.constraints.empty()) {
       // Wall contacts held as constraints: an active-set solve on the same band (physics/unilateral.h).
-      if (std::optional<Failure> f = solveUnilateral(A, w.rhs, n, h, it == 0 ? &w.velocity : nullptr, w.fixedMask,
-                                                          w.solver, w.unilateral)) {
+      if (std::optional<Failure> f = solveUnilateral(A, w.rhs, n, h, &w.velocity, it == 0, w.fixedMask, w.solver,
+                                                          w.unilateral)) {
         f->rod = rm.name;
         return {std::move(*f)};
       }

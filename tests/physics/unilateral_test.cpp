@@ -92,7 +92,7 @@ TEST(Unilateral, TheBandedActiveSetSolveIsTheQuadraticProgrammesKktPoint) {
                              Vec3(1, u(rng), u(rng)).normalized(), Vec3(u(rng), 1, u(rng)).normalized()};
     const int nodes[5] = {3, 3, 4, 5, 0};
     UnilateralScratch s;
-    for (int j = 0; j < 5; ++j) s.constraints.push_back({nodes[j], normals[j], h * u(rng), &force[j]});
+    for (int j = 0; j < 5; ++j) s.constraints.push_back({nodes[j], normals[j], h * u(rng), &force[j], {}});
     const Reference ref = enumerate(a, b, s.constraints, h);
     ASSERT_EQ(ref.solutions, 1) << "trial " << trial;
     std::vector<Vec6> x = b;
@@ -100,7 +100,7 @@ TEST(Unilateral, TheBandedActiveSetSolveIsTheQuadraticProgrammesKktPoint) {
     solver.resize(n);
     const std::vector<unsigned> fixed(n, 0u);
     BlockTridiagonal work = a;
-    ASSERT_FALSE(solveUnilateral(work, x, n, h, nullptr, fixed, solver, s).has_value()) << "trial " << trial;
+    ASSERT_FALSE(solveUnilateral(work, x, n, h, nullptr, false, fixed, solver, s).has_value()) << "trial " << trial;
     for (int i = 0; i < n; ++i)
       EXPECT_LT((x[i] - ref.x.segment<6>(6 * i)).norm(), 1e-9 * (1 + ref.x.norm())) << "trial " << trial << " node " << i;
     for (int j = 0; j < 5; ++j)
@@ -120,12 +120,12 @@ TEST(Unilateral, APrescribedNodeIsNotConstrainedAndNoConstraintsIsThePlainSolve)
   // A constraint far on the free side (it can never hold: depth -1 m) changes nothing.
   double force = -1;
   UnilateralScratch s;
-  s.constraints.push_back({2, Vec3::UnitZ(), -1.0, &force});
+  s.constraints.push_back({2, Vec3::UnitZ(), -1.0, &force, {}});
   std::vector<Vec6> x = b, plain = b;
   BlockTridiagonalSolver solver;
   solver.resize(n);
   BlockTridiagonal work = a;
-  ASSERT_FALSE(solveUnilateral(work, x, n, h, nullptr, std::vector<unsigned>(n, 0u), solver, s).has_value());
+  ASSERT_FALSE(solveUnilateral(work, x, n, h, nullptr, false, std::vector<unsigned>(n, 0u), solver, s).has_value());
   ASSERT_TRUE(solver.factorize(a, n));
   solver.solve(plain);
   for (int i = 0; i < n; ++i) EXPECT_LT((x[i] - plain[i]).norm(), 1e-12 * (1 + plain[i].norm()));
@@ -134,7 +134,7 @@ TEST(Unilateral, APrescribedNodeIsNotConstrainedAndNoConstraintsIsThePlainSolve)
   s.constraints[0].depth = 1.0;
   x = b;
   work = a;
-  ASSERT_FALSE(solveUnilateral(work, x, n, h, nullptr, std::vector<unsigned>{0, 0, 7u, 0, 0}, solver, s).has_value());
+  ASSERT_FALSE(solveUnilateral(work, x, n, h, nullptr, false, std::vector<unsigned>{0, 0, 7u, 0, 0}, solver, s).has_value());
   EXPECT_EQ(force, 0.0);
 }
 
