@@ -141,6 +141,10 @@ std::optional<Failure> solveUnilateral(BlockTridiagonal& A, std::vector<Vec6>& r
     if (c[j].node >= n || translationFixed(fixedMask[c[j].node])) s.active[j] = 0;
   s.friction.clear();
   if (velocity) gatherFriction(n, first, fixedMask, s);
+  if (first) {
+    if (s.recovery.size() < nodes) s.recovery.resize(nodes);
+    std::fill(s.recovery.begin(), s.recovery.begin() + n, Vec3::Zero());
+  }
 
   std::vector<UnilateralScratch::NodeSet>& sets = s.sets;
   sets.clear();
@@ -153,6 +157,8 @@ std::optional<Failure> solveUnilateral(BlockTridiagonal& A, std::vector<Vec6>& r
       if (i + 1 < n) A.lower[i] = s.free.lower[i];
     }
     std::copy(s.freeRhs.begin(), s.freeRhs.end(), rhs.begin());
+    if (first)
+      for (const UnilateralScratch::NodeSet& set : sets) s.recovery[c[set.index[0]].node].setZero();
     std::fill(s.used.begin(), s.used.end(), 0);
     sets.clear();
     // Per node: the held constraints, most demanding first, made independent.
@@ -185,8 +191,14 @@ std::optional<Failure> solveUnilateral(BlockTridiagonal& A, std::vector<Vec6>& r
       }
       // dv = Q a + P y with N^T Q a = target.
       const SmallSquare nq = set.n.transpose() * q;
-      const Small alpha = nq.partialPivLu().solve(set.target);
+      const auto lu = nq.partialPivLu();
+      const Small alpha = lu.solve(set.target);
       s.known[node] = q * alpha;
+      if (first) {
+        Small depth(set.k);
+        for (int j = 0; j < set.k; ++j) depth[j] = std::max(0.0, c[set.index[j]].depth) / h;
+        s.recovery[node] = q * lu.solve(depth);
+      }
       s.projector[node] = Mat3::Identity() - q * q.transpose();
       sets.push_back(set);
     }

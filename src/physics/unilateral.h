@@ -83,6 +83,10 @@ struct UnilateralScratch {
   std::vector<NodeFrictionState> friction;  // nodes with constraints that carry friction
   std::vector<int> frictionOf;              // (nnode) index into friction, or -1
   std::vector<double> nodeForce;            // (nnode) a node's multipliers summed, N; kept over the step's iterations
+  // (nnode) the part of a held node's velocity change that carries it out
+  // of a wall it started the step in (depth / h along the normals), m/s:
+  // set on the step's first iteration, zero for nodes not held.
+  std::vector<Vec3> recovery;
   int passes = 0;                           // solves in the last call
 };
 
