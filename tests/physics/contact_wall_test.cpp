@@ -115,7 +115,8 @@ struct Resting {
   State state;
 };
 
-Resting restingRod(double stiffness_n_mm2, int beams, bool contact) {
+// rigid: the wall holds each node by a constraint (the stiffness then only sets friction's spring).
+Resting restingRod(double stiffness_n_mm2, int beams, bool contact, bool rigid = false) {
   const double length = 0.01, radius = 0.15e-3;
   RodDef rod = test::straightRod(length, beams, test::platinum(), circularSection(radius, test::kPlatinumPoisson));
   rod.placement.position = Vec3(-0.005, 0, radius + 2e-6);  // 2 um above the plane
@@ -124,6 +125,7 @@ Resting restingRod(double stiffness_n_mm2, int beams, bool contact) {
   def.effects.push_back(EffectRegistry::global().use("wall_contact"));
   def.effects.back().set("stiffness_n_mm2", stiffness_n_mm2 * 1e6);
   def.effects.back().set("stiffness_per_rigidity_1_mm3", 0);  // the penalty law exactly as given
+  def.effects.back().set("rigid", rigid ? 1.0 : 0.0);
   def.effects.back().enabled = contact;
   def.obstacles.push_back(obstacleOf(test::plane(Vec3::Zero(), -Vec3::UnitZ(), 0.02, 8)));
   Resting r{compileModel(def), {}};
@@ -145,6 +147,23 @@ TEST(WallContactTest, RestingRodIsCarriedByItsWeightWithThePenaltyPenetration) {
   const double expected = weight / 0.01 / (k * 1e6);
   const double surface = (1 + kWallSkin) * 0.15e-3;
   for (int i = 0; i < rod.activeNodes; ++i) EXPECT_NEAR(surface - rod.x[i].z(), expected, 0.02 * expected) << "node " << i;
+  for (int i = 0; i < rod.activeNodes; ++i) EXPECT_LT(rod.v[i].norm(), 1e-6);
+}
+
+// The same rod on a wall held by constraints: no penalty, so no
+// penetration. References: equilibrium (the wall carries m g) and the
+// constraint itself (every node centre exactly on the contact surface,
+// kWallSkin r outside the wire, to round-off).
+TEST(WallContactTest, RestingRodIsCarriedByItsWeightOnTheContactSurfaceUnderTheConstraint) {
+  Resting r = restingRod(2.0, 20, true, true);
+  for (int i = 0; i < 1500; ++i) ASSERT_TRUE(step(r.model, r.state).ok());
+  const RodState& rod = r.state.rods[0];
+  double weight = 0;
+  for (int i = 0; i < rod.activeNodes; ++i) weight += rod.nodes[i].mass * 9.81;
+  const ContactSummary s = summarizeContacts(r.state);
+  EXPECT_NEAR(s.totalWallForce, weight, 1e-3 * weight);
+  const double surface = (1 + kWallSkin) * 0.15e-3;
+  for (int i = 0; i < rod.activeNodes; ++i) EXPECT_NEAR(rod.x[i].z(), surface, 1e-12) << "node " << i;
   for (int i = 0; i < rod.activeNodes; ++i) EXPECT_LT(rod.v[i].norm(), 1e-6);
 }
 
