@@ -19,6 +19,8 @@ constexpr double kPullTolerance = 1e-12;
 // normals adds no direction of its own (two planes of one curved wall under
 // one node): the most demanding of them is held, the others ride along.
 constexpr double kIndependent = 0.3;
+// The cosine within which a plane rides along with another: sqrt(1 - 0.3^2).
+constexpr double kRidesAlong = 0.9539;
 
 bool translationFixed(unsigned mask) { return (mask & 7u) != 0; }
 
@@ -148,6 +150,7 @@ std::optional<Failure> solveUnilateral(BlockTridiagonal& A, std::vector<Vec6>& r
 
   std::vector<UnilateralScratch::NodeSet>& sets = s.sets;
   sets.clear();
+  int resolvedForFriction = 0;
   for (s.passes = 1; s.passes <= kMaxActiveSetPasses; ++s.passes) {
     // Back to the free system: only the last pass's constrained rows and columns changed.
     for (const UnilateralScratch::NodeSet& set : sets) {
@@ -169,10 +172,12 @@ std::optional<Failure> solveUnilateral(BlockTridiagonal& A, std::vector<Vec6>& r
       int held[8], count = 0;
       for (size_t q = a; q < b && count < 8; ++q)
         if (s.active[s.order[q]]) held[count++] = s.order[q];
+      const size_t from = a;
       a = b;
       if (count == 0) continue;
       std::sort(held, held + count, [&](int x, int y) { return s.target[x] > s.target[y]; });
       UnilateralScratch::NodeSet set;
+      set.from = int(from), set.to = int(b);
       set.n.resize(3, 0);
       set.target.resize(0);
       Normals q(3, 0);
@@ -263,7 +268,16 @@ std::optional<Failure> solveUnilateral(BlockTridiagonal& A, std::vector<Vec6>& r
       const Small lambda = g.ldlt().solve(set.n.transpose() * r.head<3>()) / h;
       for (int j = 0; j < set.k; ++j) {
         s.force[set.index[j]] = lambda[j];
-        if (release && lambda[j] < -kPullTolerance) s.active[set.index[j]] = 0, changed = true;
+        if (!release || !(lambda[j] < -kPullTolerance)) continue;
+        s.active[set.index[j]] = 0, changed = true;
+        // The planes that rode along with it go too: held, the next solve
+        // would hand the hold to one of them, which pulls as it did, and
+        // the node's planes would take turns until releasing stops.
+        const Vec3& nj = c[set.index[j]].normal;
+        for (int q = set.from; q < set.to; ++q) {
+          const int o = s.order[q];
+          if (s.active[o] && !s.used[o] && c[o].normal.dot(nj) > kRidesAlong) s.active[o] = 0;
+        }
       }
     }
     // Friction against the multipliers just found; while the active set
@@ -282,7 +296,8 @@ std::optional<Failure> solveUnilateral(BlockTridiagonal& A, std::vector<Vec6>& r
         const Vec3 v = (*velocity)[f.node].head<3>() + rhs[f.node].head<3>();
         settled = frictionSettled(f, s.nodeForce[f.node], s.projector[f.node] * (f.start + h * v)) && settled;
       }
-      if (!changed && !settled && s.passes <= kMaxActiveSetPasses / 2) changed = true;
+      if (!changed && !settled && resolvedForFriction < kMaxFrictionSolves && s.passes <= kMaxActiveSetPasses / 2)
+        changed = true, ++resolvedForFriction;
     }
     if (!changed) {
       for (size_t j = 0; j < m; ++j)

@@ -23,9 +23,11 @@
 // the step ends with, implicit, or while sliding the secant of Coulomb's
 // law through that stretch, mu_d lambda / |stretch|. Its cap is the node's
 // multiplier from the same solve: the solve is repeated (a staggered
-// normal / tangential fixed point) until stick or slide, decided on that
-// multiplier and on the stretch the solve gave, is what the solve assumed,
-// and a sliding node's force is within kFrictionTolerance of mu_d lambda.
+// normal / tangential fixed point, at most kMaxFrictionSolves times) until
+// stick or slide, decided on that multiplier and on the stretch the solve
+// gave, is what the solve assumed, and a sliding node's force is within
+// kFrictionTolerance of mu_d lambda. When a held plane is released, the
+// node's planes that rode along with it are released too.
 #include <optional>
 #include <vector>
 
@@ -41,6 +43,10 @@ inline constexpr int kMaxActiveSetPasses = 16;
 // and stretch give a force within this fraction of the one it assumed
 // (the penalty's secant erred by 1 % at the start of a slide, response.h).
 inline constexpr double kFrictionTolerance = 1e-2;
+// Solves repeated for friction alone at most per call: a node on the edge
+// of its cone can flip stick and slide on every solve; the last solve's
+// friction then stands (regularised Coulomb: a creep of micrometres).
+inline constexpr int kMaxFrictionSolves = 2;
 
 // What the constrained solve keeps per rod; sized on first use, reused.
 struct UnilateralScratch {
@@ -53,6 +59,7 @@ struct UnilateralScratch {
     Small target;
     int index[3] = {-1, -1, -1};
     int k = 0;
+    int from = 0, to = 0;  // the node's constraints: order[from, to)
   };
   std::vector<NodeConstraint> constraints;  // this assembly's, in the order the effects gave them
   std::vector<char> active;                 // (constraints) held; kept over the step's Newton iterations
