@@ -83,9 +83,12 @@ void addFriction(Friction& f, const Mat3& P, const Vec3& v, double h, BlockTridi
 // Whether the solve's normal force and stretch agree with what its
 // friction assumed (then it stands), updating what the next solve assumes.
 bool frictionSettled(Friction& f, double force, const Vec3& stretch) {
-  const bool wasApplied = f.applied;
-  f.force = force, f.ahead = stretch, f.solved = true;
-  if (!wasApplied) return !(force > 0);
+  f.force = force;
+  // A solve without this node's friction (no normal force assumed yet, as
+  // at a contact's first step) says nothing of the stretch friction will
+  // allow: the next one predicts it from the start velocity again.
+  if (!f.applied) return !(force > 0);
+  f.ahead = stretch, f.solved = true;
   if (!(force > 0)) return false;
   const double limit = (f.slidBefore ? f.muDynamic : f.muStatic) * force;
   const bool stick = f.stiffness * stretch.norm() <= limit * (1 + 1e-9);

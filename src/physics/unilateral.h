@@ -46,6 +46,9 @@ inline constexpr double kFrictionTolerance = 1e-2;
 // Solves repeated for friction alone at most per call: a node on the edge
 // of its cone can flip stick and slide on every solve; the last solve's
 // friction then stands (regularised Coulomb: a creep of micrometres).
+// Two leave a node that a step stops from sliding 8 % of its speed where
+// the stick spring's exact answer leaves 1 % (three reach it, but cost more
+// passes; docs/contact.md).
 inline constexpr int kMaxFrictionSolves = 2;
 
 // What the constrained solve keeps per rod; sized on first use, reused.

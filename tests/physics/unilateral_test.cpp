@@ -138,5 +138,64 @@ TEST(Unilateral, APrescribedNodeIsNotConstrainedAndNoConstraintsIsThePlainSolve)
   EXPECT_EQ(force, 0.0);
 }
 
+// One free node of mass m on the floor z = 0 (normal +z), pressed by P and
+// pulled along x by T over one step h, friction in the solve. References:
+// the normal force is P (the multiplier balances the press); sticking, the
+// regularised Coulomb spring k_t gives m dv = h (T - k_t h dv); sliding at
+// the dynamic cap, m dv = h (T - mu_d P) (Coulomb's law).
+struct FloorNode {
+  double dvx = 0, force = 0;
+  NodeFrictionMemory memory;
+};
+
+FloorNode pullOnTheFloor(double T, double P, double vx, const NodeFrictionMemory& start) {
+  constexpr double m = 1e-6, inertia = 1e-12, h = 1e-3;
+  BlockTridiagonal a;
+  a.resize(1);
+  a.diag[0] = Mat6::Identity() * m;
+  a.diag[0].bottomRightCorner<3, 3>() = Mat3::Identity() * inertia;
+  std::vector<Vec6> x(1, Vec6::Zero());
+  x[0].head<3>() = h * Vec3(T, 0, -P);
+  std::vector<Vec6> velocity(1, Vec6::Zero());
+  velocity[0][0] = vx;
+  FloorNode out;
+  UnilateralScratch s;
+  s.constraints.push_back({0, Vec3::UnitZ(), 0.0, &out.force, {0.4, 0.3, 100.0, 0.0, start, &out.memory}});
+  BlockTridiagonalSolver solver;
+  solver.resize(1);
+  EXPECT_FALSE(solveUnilateral(a, x, 1, h, &velocity, true, std::vector<unsigned>(1, 0u), solver, s).has_value());
+  EXPECT_NEAR(x[0][2], 0.0, 1e-15) << "held on the floor";
+  out.dvx = x[0][0];
+  return out;
+}
+
+TEST(Unilateral, FrictionInTheSolveIsCappedByTheMultiplierOfTheSameSolve) {
+  constexpr double m = 1e-6, h = 1e-3, kt = 100.0, P = 1e-4;
+  // Below mu_s P = 40 uN, at rest: it sticks on the spring.
+  const FloorNode stick = pullOnTheFloor(0.2 * P, P, 0.0, {});
+  EXPECT_NEAR(stick.force, P, 1e-12 * P);
+  EXPECT_NEAR(stick.dvx, h * 0.2 * P / (m + h * h * kt), 1e-12);
+  EXPECT_FALSE(stick.memory.sliding);
+  EXPECT_NEAR(stick.memory.force, P, 1e-12 * P);
+  // Sliding at 0.1 m/s, its spring at the dynamic cone (mu_d P / k_t),
+  // pulled by a little more than mu_d P: it goes on sliding against mu_d P
+  // (the secant's error, a h / v, is 1 % here), within the solve's tolerance.
+  NodeFrictionMemory sliding;
+  sliding.stretch = Vec3(0.3 * P / kt, 0, 0), sliding.force = P, sliding.sliding = true;
+  const FloorNode slide = pullOnTheFloor(0.31 * P, P, 0.1, sliding);
+  EXPECT_NEAR(slide.force, P, 1e-12 * P);
+  const double coulomb = h * (0.31 * P - 0.3 * P) / m;
+  EXPECT_NEAR(slide.dvx, coulomb, kFrictionTolerance * h * 0.3 * P / m);
+  EXPECT_TRUE(slide.memory.sliding);
+  // The cap is the multiplier: pressed four times as hard, the same pull
+  // on the node sliding at 10 mm/s stops it within the step (mu_d 4P - T
+  // takes its momentum in a ninth of the step): it sticks after. (With the
+  // solve's two friction repeats it keeps 8 % of its speed where the stick
+  // spring's exact answer keeps 1 %: docs/contact.md.)
+  const FloorNode pressed = pullOnTheFloor(0.31 * P, 4 * P, 0.01, sliding);
+  EXPECT_NEAR(pressed.force, 4 * P, 1e-12 * P);
+  EXPECT_FALSE(pressed.memory.sliding);
+}
+
 }  // namespace
 }  // namespace coilsim
