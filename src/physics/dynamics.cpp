@@ -50,6 +50,7 @@ StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, d
   collectFixedDofs(rm, r);
   prescribedVelocities(rm, r, h);
 
+  bool recovered = false;  // the first iteration's solve held nodes (UnilateralScratch::recovery)
   for (int it = 0; it < model.newtonIterations; ++it) {
     ++iterations;
     // The matrix starts as (h b + h^2) K, assembled in place together with
@@ -91,9 +92,10 @@ StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, d
         if (m & (1u << d)) applyDirichlet(A, w.rhs, i, d, w.fixedValue[i][d] - w.velocity[i][d], n);
     }
     if (!w.unilateral.constraints.empty()) {
+      recovered = recovered || it == 0;
       // Wall contacts held as constraints: an active-set solve on the same band (physics/unilateral.h).
-      if (std::optional<Failure> f = solveUnilateral(A, w.rhs, n, h, it == 0 ? &w.velocity : nullptr, w.fixedMask,
-                                                          w.solver, w.unilateral)) {
+      if (std::optional<Failure> f = solveUnilateral(A, w.rhs, n, h, &w.velocity, it == 0, w.fixedMask, w.solver,
+                                                          w.unilateral)) {
         f->rod = rm.name;
         return {std::move(*f)};
       }
@@ -110,8 +112,15 @@ StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, d
     }
     integratePoses(r, h);
   }
-  // The wall's force per node is its constraints' multipliers, known only now.
   if (!w.unilateral.constraints.empty()) {
+    // A node that started the step inside a wall is carried out by the
+    // step's positions, not by a velocity it keeps (the position
+    // correction split from the velocity, as Bullet's split impulse):
+    // kept, depth / h is kinetic energy the wall gives the coil, at every
+    // step a sliding node meets the curved wall beyond its tangent plane,
+    // and h / 64 in a retaken step's substeps (physics/unilateral.h).
+    for (int i = 0; recovered && i < n; ++i) r.v[i] -= w.unilateral.recovery[i];
+    // The wall's force per node is its constraints' multipliers, known only now.
     std::fill(r.contact.wallForce.begin(), r.contact.wallForce.end(), 0.0);
     for (const NodeConstraint& c : w.unilateral.constraints)
       if (c.force && size_t(c.node) < r.contact.wallForce.size()) r.contact.wallForce[c.node] += *c.force;

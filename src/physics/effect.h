@@ -16,6 +16,7 @@
 
 #include "physics/failure.h"
 #include "physics/math.h"
+#include "physics/node_friction.h"
 #include "physics/param.h"
 
 namespace coilsim {
@@ -57,12 +58,15 @@ struct NodeCoupling {
 // assembly (depth < 0: it may approach by -depth). The step's solve
 // (physics/unilateral.h) holds it as an equality while its multiplier
 // pushes and releases it when it would pull; the multiplier, the force the
-// constraint exerts along `normal` (N, >= 0), is written to *force.
+// constraint exerts along `normal` (N, >= 0), is written to *force. With
+// `friction` the held node also feels Coulomb friction capped by its
+// multiplier (physics/node_friction.h).
 struct NodeConstraint {
   int node = 0;
   Vec3 normal = Vec3::UnitZ();
   double depth = 0;
   double* force = nullptr;
+  NodeFriction friction;
 };
 
 // Where an effect writes for one rod; all arrays have one entry per node.

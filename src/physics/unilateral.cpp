@@ -19,6 +19,8 @@ constexpr double kPullTolerance = 1e-12;
 // normals adds no direction of its own (two planes of one curved wall under
 // one node): the most demanding of them is held, the others ride along.
 constexpr double kIndependent = 0.3;
+// The cosine within which a plane rides along with another: sqrt(1 - 0.3^2).
+constexpr double kRidesAlong = 0.9539;
 
 bool translationFixed(unsigned mask) { return (mask & 7u) != 0; }
 
@@ -27,11 +29,95 @@ void copyLeading(const BlockTridiagonal& from, BlockTridiagonal& to, int n) {
   std::copy(from.lower.begin(), from.lower.begin() + std::max(0, n - 1), to.lower.begin());
 }
 
+using Friction = UnilateralScratch::NodeFrictionState;
+
+// One entry per node whose constraints carry friction: the largest of
+// their constants, the longest remembered stretch (a contact new this step
+// remembers none) and the force the first solve assumes, the last step's
+// on the step's first iteration, the last iteration's after it.
+void gatherFriction(int n, bool first, const std::vector<unsigned>& fixedMask, UnilateralScratch& s) {
+  s.friction.clear();
+  if (s.frictionOf.size() < s.known.size()) s.frictionOf.resize(s.known.size()), s.nodeForce.resize(s.known.size());
+  std::fill(s.frictionOf.begin(), s.frictionOf.begin() + n, -1);
+  for (const int j : s.order) {
+    const NodeConstraint& c = s.constraints[j];
+    if (c.node >= n || translationFixed(fixedMask[c.node]) || !c.friction.any()) continue;
+    if (s.frictionOf[c.node] < 0) {
+      s.frictionOf[c.node] = int(s.friction.size());
+      s.friction.push_back({});
+      s.friction.back().node = c.node;
+      if (!first) s.friction.back().force = s.nodeForce[c.node];
+    }
+    Friction& f = s.friction[s.frictionOf[c.node]];
+    const NodeFriction& g = c.friction;
+    f.muStatic = std::max(f.muStatic, g.muStatic), f.muDynamic = std::max(f.muDynamic, g.muDynamic);
+    f.stiffness = std::max(f.stiffness, g.stiffness), f.damping = std::max(f.damping, g.damping);
+    if (g.start.stretch.squaredNorm() > f.start.squaredNorm()) f.start = g.start.stretch;
+    f.slidBefore = f.slidBefore || g.start.sliding;
+    if (first) f.force = std::max(f.force, g.start.force);
+  }
+}
+
+// Adds node i's friction, for the normal force and end-of-step stretch
+// assumed, to its projected rows: the force at the step's end is linear in
+// dv, f = -k_t P (s0 + h (v + dv)) - c_t P (v + dv) while sticking, or
+// -sigma P (s0 + h (v + dv)) with sigma = mu_d lambda / |stretch| while
+// sliding; -df/d(dv) goes to the matrix (times h), f at dv = 0 to the
+// right-hand side (times h). Both lie in P's range, so the projection keeps them.
+void addFriction(Friction& f, const Mat3& P, const Vec3& v, double h, BlockTridiagonal& A, Vec6& rhs) {
+  const Vec3 base = P * (f.start + h * v);
+  const Vec3 ahead = f.solved ? f.ahead : base;
+  const double limit = (f.slidBefore ? f.muDynamic : f.muStatic) * f.force;
+  f.stick = f.stiffness * ahead.norm() <= limit * (1 + 1e-9);
+  f.applied = true, f.appliedForce = f.force, f.appliedAhead = ahead.norm();
+  if (f.stick) {
+    A.diag[f.node].topLeftCorner<3, 3>() += (h * h * f.stiffness + h * f.damping) * P;
+    rhs.head<3>() -= h * (f.stiffness * base + f.damping * (P * v));
+  } else {
+    const double sigma = f.muDynamic * f.force / ahead.norm();
+    A.diag[f.node].topLeftCorner<3, 3>() += h * h * sigma * P;
+    rhs.head<3>() -= h * sigma * base;
+  }
+}
+
+// Whether the solve's normal force and stretch agree with what its
+// friction assumed (then it stands), updating what the next solve assumes.
+bool frictionSettled(Friction& f, double force, const Vec3& stretch) {
+  f.force = force;
+  // A solve without this node's friction (no normal force assumed yet, as
+  // at a contact's first step) says nothing of the stretch friction will
+  // allow: the next one predicts it from the start velocity again.
+  if (!f.applied) return !(force > 0);
+  f.ahead = stretch, f.solved = true;
+  if (!(force > 0)) return false;
+  const double limit = (f.slidBefore ? f.muDynamic : f.muStatic) * force;
+  const bool stick = f.stiffness * stretch.norm() <= limit * (1 + 1e-9);
+  if (stick != f.stick) return false;
+  if (stick) return true;
+  const double assumed = f.appliedForce / std::max(f.appliedAhead, 1e-300), found = force / stretch.norm();
+  return std::abs(assumed - found) <= kFrictionTolerance * found;
+}
+
+// What the step leaves a node's friction: its stretch, cut to the dynamic
+// cone while sliding, its normal force and whether it slid.
+NodeFrictionMemory memoryOf(const Friction& f) {
+  NodeFrictionMemory m;
+  if (!(f.force > 0)) return m;
+  m.force = f.force;
+  m.stretch = f.ahead;
+  const double limit = (f.slidBefore ? f.muDynamic : f.muStatic) * f.force;
+  m.sliding = f.stiffness * f.ahead.norm() > limit * (1 + 1e-9);
+  if (m.sliding) m.stretch *= f.muDynamic * f.force / (f.stiffness * f.ahead.norm());
+  return m;
+}
+
 }  // namespace
 
 std::optional<Failure> solveUnilateral(BlockTridiagonal& A, std::vector<Vec6>& rhs, int n, double h,
-                                       const std::vector<Vec6>* startVelocity, const std::vector<unsigned>& fixedMask,
-                                       BlockTridiagonalSolver& solver, UnilateralScratch& s) {
+                                       const std::vector<Vec6>* velocity, bool first,
+                                       const std::vector<unsigned>& fixedMask, BlockTridiagonalSolver& solver,
+                                       UnilateralScratch& s) {
+  const std::vector<Vec6>* startVelocity = first ? velocity : nullptr;
   const std::vector<NodeConstraint>& c = s.constraints;
   const size_t m = c.size();
   if (s.free.size() < A.size()) s.free.resize(A.size());
@@ -58,9 +144,16 @@ std::optional<Failure> solveUnilateral(BlockTridiagonal& A, std::vector<Vec6>& r
   std::stable_sort(s.order.begin(), s.order.end(), [&](int a, int b) { return c[a].node < c[b].node; });
   for (size_t j = 0; j < m; ++j)
     if (c[j].node >= n || translationFixed(fixedMask[c[j].node])) s.active[j] = 0;
+  s.friction.clear();
+  if (velocity) gatherFriction(n, first, fixedMask, s);
+  if (first) {
+    if (s.recovery.size() < nodes) s.recovery.resize(nodes);
+    std::fill(s.recovery.begin(), s.recovery.begin() + n, Vec3::Zero());
+  }
 
   std::vector<UnilateralScratch::NodeSet>& sets = s.sets;
   sets.clear();
+  int resolvedForFriction = 0;
   for (s.passes = 1; s.passes <= kMaxActiveSetPasses; ++s.passes) {
     // Back to the free system: only the last pass's constrained rows and columns changed.
     for (const UnilateralScratch::NodeSet& set : sets) {
@@ -70,6 +163,8 @@ std::optional<Failure> solveUnilateral(BlockTridiagonal& A, std::vector<Vec6>& r
       if (i + 1 < n) A.lower[i] = s.free.lower[i];
     }
     std::copy(s.freeRhs.begin(), s.freeRhs.end(), rhs.begin());
+    if (first)
+      for (const UnilateralScratch::NodeSet& set : sets) s.recovery[c[set.index[0]].node].setZero();
     std::fill(s.used.begin(), s.used.end(), 0);
     sets.clear();
     // Per node: the held constraints, most demanding first, made independent.
@@ -80,10 +175,12 @@ std::optional<Failure> solveUnilateral(BlockTridiagonal& A, std::vector<Vec6>& r
       int held[8], count = 0;
       for (size_t q = a; q < b && count < 8; ++q)
         if (s.active[s.order[q]]) held[count++] = s.order[q];
+      const size_t from = a;
       a = b;
       if (count == 0) continue;
       std::sort(held, held + count, [&](int x, int y) { return s.target[x] > s.target[y]; });
       UnilateralScratch::NodeSet set;
+      set.from = int(from), set.to = int(b);
       set.n.resize(3, 0);
       set.target.resize(0);
       Normals q(3, 0);
@@ -102,8 +199,14 @@ std::optional<Failure> solveUnilateral(BlockTridiagonal& A, std::vector<Vec6>& r
       }
       // dv = Q a + P y with N^T Q a = target.
       const SmallSquare nq = set.n.transpose() * q;
-      const Small alpha = nq.partialPivLu().solve(set.target);
+      const auto lu = nq.partialPivLu();
+      const Small alpha = lu.solve(set.target);
       s.known[node] = q * alpha;
+      if (first) {
+        Small depth(set.k);
+        for (int j = 0; j < set.k; ++j) depth[j] = std::max(0.0, c[set.index[j]].depth) / h;
+        s.recovery[node] = q * lu.solve(depth);
+      }
       s.projector[node] = Mat3::Identity() - q * q.transpose();
       sets.push_back(set);
     }
@@ -126,6 +229,15 @@ std::optional<Failure> solveUnilateral(BlockTridiagonal& A, std::vector<Vec6>& r
       rhs[i].head<3>() = P * rhs[i].head<3>();
       if (i > 0) A.lower[i - 1].topRows<3>() = P * A.lower[i - 1].topRows<3>();
       if (i + 1 < n) A.lower[i].leftCols<3>() = A.lower[i].leftCols<3>() * P;
+    }
+    // Friction on the held nodes, for the force and stretch the last solve gave.
+    for (Friction& f : s.friction) f.applied = f.held = false;
+    for (const UnilateralScratch::NodeSet& set : sets) {
+      const int i = c[set.index[0]].node;
+      if (s.friction.empty() || s.frictionOf[i] < 0 || set.k == 3) continue;
+      Friction& f = s.friction[s.frictionOf[i]];
+      f.held = true;
+      if (f.force > 0) addFriction(f, s.projector[i], (*velocity)[i].head<3>(), h, A, rhs[i]);
     }
     if (!solver.factorize(A, n)) {
       Failure f = badRod("", "implicit matrix with wall constraints is not positive definite");
@@ -159,12 +271,44 @@ std::optional<Failure> solveUnilateral(BlockTridiagonal& A, std::vector<Vec6>& r
       const Small lambda = g.ldlt().solve(set.n.transpose() * r.head<3>()) / h;
       for (int j = 0; j < set.k; ++j) {
         s.force[set.index[j]] = lambda[j];
-        if (release && lambda[j] < -kPullTolerance) s.active[set.index[j]] = 0, changed = true;
+        if (!release || !(lambda[j] < -kPullTolerance)) continue;
+        s.active[set.index[j]] = 0, changed = true;
+        // The planes that rode along with it go too: held, the next solve
+        // would hand the hold to one of them, which pulls as it did, and
+        // the node's planes would take turns until releasing stops.
+        const Vec3& nj = c[set.index[j]].normal;
+        for (int q = set.from; q < set.to; ++q) {
+          const int o = s.order[q];
+          if (s.active[o] && !s.used[o] && c[o].normal.dot(nj) > kRidesAlong) s.active[o] = 0;
+        }
       }
+    }
+    // Friction against the multipliers just found; while the active set
+    // still settles, a friction that disagrees takes another solve.
+    if (!s.friction.empty()) {
+      for (const Friction& f : s.friction) s.nodeForce[f.node] = 0;
+      for (const UnilateralScratch::NodeSet& set : sets)
+        for (int j = 0; j < set.k; ++j) s.nodeForce[c[set.index[j]].node] += std::max(0.0, s.force[set.index[j]]);
+      bool settled = true;
+      for (Friction& f : s.friction) {
+        if (!f.held) {
+          settled = !f.applied && settled;
+          f.force = 0, f.solved = false;
+          continue;
+        }
+        const Vec3 v = (*velocity)[f.node].head<3>() + rhs[f.node].head<3>();
+        settled = frictionSettled(f, s.nodeForce[f.node], s.projector[f.node] * (f.start + h * v)) && settled;
+      }
+      if (!changed && !settled && resolvedForFriction < kMaxFrictionSolves && s.passes <= kMaxActiveSetPasses / 2)
+        changed = true, ++resolvedForFriction;
     }
     if (!changed) {
       for (size_t j = 0; j < m; ++j)
         if (c[j].force) *c[j].force = s.used[j] ? std::max(0.0, s.force[j]) : 0.0;
+      if (!s.friction.empty())
+        for (const NodeConstraint& k : c)
+          if (k.friction.end && k.node < n && s.frictionOf[k.node] >= 0)
+            *k.friction.end = memoryOf(s.friction[s.frictionOf[k.node]]);
       return std::nullopt;
     }
   }

@@ -3,7 +3,9 @@
 // whose slope is raised slowly (gravity turned, the same thing) to angle a
 // sticks while tan a < mu_s and slides above with acceleration
 // g (sin a - mu_d cos a) (a block on an incline: the rod lies straight along
-// the slope, so it moves as one rigid body).
+// the slope, so it moves as one rigid body). Each test runs under both
+// wall laws: the penalty (rigid = 0) and a constraint per node (rigid = 1),
+// whose Coulomb cap is the multiplier of the step's own solve.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -24,8 +26,9 @@ struct Incline {
 };
 
 // A 10 mm rod along +x on the plane z = 0; gravity tilted by `angle` about y
-// so the slope runs down towards +x (the same as tilting the plane).
-Incline incline(double angle) {
+// so the slope runs down towards +x (the same as tilting the plane); the
+// wall a penalty or (rigid) constraints.
+Incline incline(double angle, bool rigid) {
   RodDef rod = test::straightRod(0.01, 20, test::platinum(), circularSection(kRadius, test::kPlatinumPoisson));
   // Placed already pressed in by its weight (w cos a / k per length), so the
   // wall carries it from the first step: dropped from the contact surface it
@@ -40,6 +43,7 @@ Incline incline(double angle) {
   def.effects.push_back(EffectRegistry::global().use("wall_contact"));
   def.effects.back().set("friction_static", kMuStatic);
   def.effects.back().set("friction_dynamic", kMuDynamic);
+  def.effects.back().set("rigid", rigid ? 1.0 : 0.0);
   def.obstacles.push_back(test::obstacleOf(test::plane(Vec3::Zero(), -Vec3::UnitZ(), 0.5, 12)));
   Incline r{compileModel(def), {}};
   r.state = makeState(r.model);
@@ -69,11 +73,14 @@ void tiltTo(Incline& s, double angle, int holdSteps) {
   }
 }
 
-TEST(ContactFrictionTest, RodSticksBelowTheStaticAngle) {
+// The wall law under test: false the penalty, true the constraint.
+class ContactFrictionTest : public ::testing::TestWithParam<bool> {};
+
+TEST_P(ContactFrictionTest, RodSticksBelowTheStaticAngle) {
   // 15 deg is below atan(mu_d) = 16.7 deg, 20 deg between it and atan(mu_s) =
   // 21.8 deg: the rod must stay (static coefficient), not creep at the dynamic one.
   for (const double degrees : {15.0, 20.0}) {
-    Incline s = incline(0.0);
+    Incline s = incline(0.0, GetParam());
     const double x0 = meanX(s.state.rods[0]);
     tiltTo(s, degrees * M_PI / 180, 500);
     const double moved = meanX(s.state.rods[0]) - x0;
@@ -84,10 +91,10 @@ TEST(ContactFrictionTest, RodSticksBelowTheStaticAngle) {
   }
 }
 
-TEST(ContactFrictionTest, RodSlidesAboveTheStaticAngleWithCoulombsAcceleration) {
+TEST_P(ContactFrictionTest, RodSlidesAboveTheStaticAngleWithCoulombsAcceleration) {
   for (const double degrees : {25.0, 35.0}) {
     const double a = degrees * M_PI / 180;
-    Incline s = incline(0.0);
+    Incline s = incline(0.0, GetParam());
     tiltTo(s, a, 100);
     const double t1 = s.state.time, v1 = meanVx(s.state.rods[0]);
     for (int i = 0; i < 150; ++i) ASSERT_TRUE(step(s.model, s.state).ok());
@@ -99,9 +106,9 @@ TEST(ContactFrictionTest, RodSlidesAboveTheStaticAngleWithCoulombsAcceleration) 
   }
 }
 
-TEST(ContactFrictionTest, WithoutFrictionTheRodAcceleratesAtGSinA) {
+TEST_P(ContactFrictionTest, WithoutFrictionTheRodAcceleratesAtGSinA) {
   const double a = 10 * M_PI / 180;
-  Incline s = incline(a);
+  Incline s = incline(a, GetParam());
   s.model.effects.back().set("friction_static", 0);
   s.model.effects.back().set("friction_dynamic", 0);
   for (int i = 0; i < 50; ++i) ASSERT_TRUE(step(s.model, s.state).ok());
@@ -110,6 +117,9 @@ TEST(ContactFrictionTest, WithoutFrictionTheRodAcceleratesAtGSinA) {
   const double measured = (meanVx(s.state.rods[0]) - v1) / (s.state.time - t1);
   EXPECT_NEAR(measured, kG * std::sin(a), 0.01 * kG * std::sin(a));
 }
+
+INSTANTIATE_TEST_SUITE_P(WallLaw, ContactFrictionTest, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool>& i) { return i.param ? "Constraint" : "Penalty"; });
 
 }  // namespace
 }  // namespace coilsim

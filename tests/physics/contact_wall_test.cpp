@@ -115,7 +115,8 @@ struct Resting {
   State state;
 };
 
-Resting restingRod(double stiffness_n_mm2, int beams, bool contact) {
+// rigid: the wall holds each node by a constraint (the stiffness then only sets friction's spring).
+Resting restingRod(double stiffness_n_mm2, int beams, bool contact, bool rigid = false) {
   const double length = 0.01, radius = 0.15e-3;
   RodDef rod = test::straightRod(length, beams, test::platinum(), circularSection(radius, test::kPlatinumPoisson));
   rod.placement.position = Vec3(-0.005, 0, radius + 2e-6);  // 2 um above the plane
@@ -124,6 +125,7 @@ Resting restingRod(double stiffness_n_mm2, int beams, bool contact) {
   def.effects.push_back(EffectRegistry::global().use("wall_contact"));
   def.effects.back().set("stiffness_n_mm2", stiffness_n_mm2 * 1e6);
   def.effects.back().set("stiffness_per_rigidity_1_mm3", 0);  // the penalty law exactly as given
+  def.effects.back().set("rigid", rigid ? 1.0 : 0.0);
   def.effects.back().enabled = contact;
   def.obstacles.push_back(obstacleOf(test::plane(Vec3::Zero(), -Vec3::UnitZ(), 0.02, 8)));
   Resting r{compileModel(def), {}};
@@ -148,6 +150,23 @@ TEST(WallContactTest, RestingRodIsCarriedByItsWeightWithThePenaltyPenetration) {
   for (int i = 0; i < rod.activeNodes; ++i) EXPECT_LT(rod.v[i].norm(), 1e-6);
 }
 
+// The same rod on a wall held by constraints: no penalty, so no
+// penetration. References: equilibrium (the wall carries m g) and the
+// constraint itself (every node centre exactly on the contact surface,
+// kWallSkin r outside the wire, to round-off).
+TEST(WallContactTest, RestingRodIsCarriedByItsWeightOnTheContactSurfaceUnderTheConstraint) {
+  Resting r = restingRod(2.0, 20, true, true);
+  for (int i = 0; i < 1500; ++i) ASSERT_TRUE(step(r.model, r.state).ok());
+  const RodState& rod = r.state.rods[0];
+  double weight = 0;
+  for (int i = 0; i < rod.activeNodes; ++i) weight += rod.nodes[i].mass * 9.81;
+  const ContactSummary s = summarizeContacts(r.state);
+  EXPECT_NEAR(s.totalWallForce, weight, 1e-3 * weight);
+  const double surface = (1 + kWallSkin) * 0.15e-3;
+  for (int i = 0; i < rod.activeNodes; ++i) EXPECT_NEAR(rod.x[i].z(), surface, 1e-12) << "node " << i;
+  for (int i = 0; i < rod.activeNodes; ++i) EXPECT_LT(rod.v[i].norm(), 1e-6);
+}
+
 TEST(WallContactTest, SwitchedOffTheRodFallsThrough) {
   Resting r = restingRod(2.0, 20, false);
   for (int i = 0; i < 100; ++i) ASSERT_TRUE(step(r.model, r.state).ok());
@@ -163,7 +182,9 @@ struct Cavity {
   TriangleMesh mesh;
 };
 
-std::unique_ptr<Cavity> cavityDeployment(double coilLength, int beams, bool wall, bool self, double wire = 0.15e-3) {
+// rigid: the wall holds each node by a constraint instead of the penalty.
+std::unique_ptr<Cavity> cavityDeployment(double coilLength, int beams, bool wall, bool self, double wire = 0.15e-3,
+                                         bool rigid = false) {
   auto c = std::make_unique<Cavity>();
   c->mesh = icosphere(3.5e-3, 4);  // 5120 triangles, inscribed radius 3.497 mm
   ModelDef def;
@@ -173,6 +194,7 @@ std::unique_ptr<Cavity> cavityDeployment(double coilLength, int beams, bool wall
   def.timeStep = 1e-3;
   def.effects.push_back(EffectRegistry::global().use("wall_contact"));
   def.effects.back().enabled = wall;
+  def.effects.back().set("rigid", rigid ? 1.0 : 0.0);
   def.effects.push_back(EffectRegistry::global().use("self_contact"));
   def.effects.back().enabled = self;
   def.obstacles.push_back(obstacleOf(c->mesh));
@@ -286,6 +308,23 @@ TEST(WallContactTest, CoilPushedAt10MmPerSecondStaysInsideA7MmCavity) {
   EXPECT_LT(p.fastest, 0.5);
 }
 
+// The same push with the wall held by constraints (wall_contact's rigid =
+// 1), against the same face planes and the same bound on speed.
+TEST(WallContactTest, CoilPushedAt10MmPerSecondStaysInsideA7MmCavityUnderTheWallConstraint) {
+  const double length = 0.04;
+  auto c = cavityDeployment(length, 80, true, true, 0.15e-3, true);
+  const CavityPush p = pushIntoCavity(*c, length);
+  ASSERT_EQ(p.refused, "");
+  EXPECT_DOUBLE_EQ(c->state.device.deployed, length);
+  const double radius = 0.15e-3;
+  std::printf("[ measured ] constraint: deepest wall penetration %.3f um (%.1f %% of the wire radius), max node wall "
+              "force %.4f N, fastest node %.3f m/s, %ld steps retaken in substeps\n", p.deepest * 1e6,
+              100 * p.deepest / radius, p.maxForce, p.fastest, c->state.substepped);
+  EXPECT_LT(p.deepest, 0.1 * radius);
+  EXPECT_GT(p.maxForce, 0) << "the coil never touched the wall: the test would prove nothing";
+  EXPECT_LT(p.fastest, 0.5);
+}
+
 // The same push without friction (wall and self-contact), which used to be
 // refused at t = 0.66 s: the coil's distal end, pushed end-on into the wall,
 // skates along it at up to 1.2 m/s, 1.2 mm per step, and a node sliding that
@@ -342,6 +381,22 @@ TEST(WallContactTest, AThickStiffWireIsHeldByTheDefaultWall) {
       EXPECT_GT(p.deepest, 0.1 * radius) << "the control does not fail: the bound proves nothing";
     }
   }
+}
+
+// The thick wire under the wall constraint: no stiffness to scale, so no
+// control of its own here (the penalty's is above; the wall switched off,
+// below, is what the bound must fail without).
+TEST(WallContactTest, AThickStiffWireIsHeldByTheWallConstraint) {
+  const double length = 0.04, radius = 0.3556e-3;
+  auto c = cavityDeployment(length, 80, true, true, radius, true);
+  const CavityPush p = pushIntoCavity(*c, length);
+  std::printf("[ measured ] 0.356 mm wire, wall constraint: deepest penetration %.2f um (%.1f %% of r), max node wall "
+              "force %.3f N, fastest node %.3f m/s, %ld steps retaken in substeps\n", p.deepest * 1e6,
+              100 * p.deepest / radius, p.maxForce, p.fastest, c->state.substepped);
+  ASSERT_EQ(p.refused, "");
+  EXPECT_DOUBLE_EQ(c->state.device.deployed, length);
+  EXPECT_LT(p.deepest, 0.1 * radius);
+  EXPECT_GT(p.maxForce, 0) << "the coil never touched the wall: the test would prove nothing";
 }
 
 TEST(WallContactTest, SwitchedOffTheCoilLeavesTheCavity) {

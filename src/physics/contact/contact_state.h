@@ -7,6 +7,7 @@
 
 #include "physics/contact/triangle_cache.h"
 #include "physics/math.h"
+#include "physics/node_friction.h"
 
 namespace coilsim {
 
@@ -58,6 +59,14 @@ struct RodContacts {
   std::vector<double> wallForce;  // (nnode) normal force from walls per node, N
   std::vector<double> selfForce;  // (nnode) normal force from self-contact per node, N
   std::vector<double> rodForce;   // (nnode) normal force from other rods per node, N
+  // Walls held by constraints (ContactLaw::rigid): each node's friction as
+  // the last step's solve left it, and as this step's solves leave it (the
+  // wall's detection moves the second into the first; a retaken step
+  // starts again from the first). Per node, not per contact: a node's
+  // contacts change from step to step, its friction does not.
+  std::vector<NodeFrictionMemory> wallFrictionBefore;         // (nnode)
+  mutable std::vector<NodeFrictionMemory> wallFrictionAfter;  // (nnode) written through the const State the effects see
+  int wallFrictionNodes = -1;  // the active nodes when wallFrictionAfter was written
   double wallPenetration = 0;     // deepest wall penetration of the wire (not its skin) at the last detection, m (>= 0)
   // The deepest wallPenetration of the detections since the step's record
   // took it (dynamics.cpp): a step retaken in substeps detects again in

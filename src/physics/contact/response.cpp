@@ -73,13 +73,33 @@ bool markClosing(ContactPoint& c, const RodState& rod, double h) {
   return any;
 }
 
-void updateContact(ContactPoint& c, const ContactPoint* previous, const RodState& rod, const ContactLaw& law, double h) {
-  // A rigid wall's force is known after the solve: the last step's stands in (same segment: same nodes).
-  if (law.rigid && c.line && previous) {
+namespace {
+
+// A wall held by constraints: the force and friction are the step's solve's
+// (physics/unilateral.h; friction's memory is per node, RodContacts). Until
+// it runs, the last step's multipliers stand in for what is reported at
+// detection (same segment: same nodes).
+void updateRigidContact(ContactPoint& c, const ContactPoint* previous, const RodState& rod, const ContactLaw& law) {
+  if (previous) {
     const bool same = previous->segment == c.segment;
     const double total = previous->multiplier[0] + previous->multiplier[1];
     for (int end = 0; end < 2; ++end)
       c.multiplier[end] = same ? previous->multiplier[end] : (c.node < 0 ? 0.5 : c.node == end ? 1.0 : 0.0) * total;
+  }
+  const NormalEval n = evalNormal(c, rod, law);
+  c.normalForce = n.force();
+  if (n.touching) c.s = n.wb();
+  c.at = along(rod.x, c, c.s);
+  c.slip.setZero();  // the contact's own spring is the penalty's; held nodes keep theirs in `held`
+  c.sliding = false;
+}
+
+}  // namespace
+
+void updateContact(ContactPoint& c, const ContactPoint* previous, const RodState& rod, const ContactLaw& law, double h) {
+  if (law.rigid && c.line) {
+    updateRigidContact(c, previous, rod, law);
+    return;
   }
   const NormalEval n = evalNormal(c, rod, law);
   c.normalForce = n.force();
@@ -244,14 +264,23 @@ void applyContacts(std::span<const ContactPoint> contacts, const EffectContext& 
   for (const ContactPoint& c : contacts) {
     const NormalEval n = evalNormal(c, rod, law);
     if (law.rigid && c.line && out.constraints) {
-      // Each node held against the plane by the solve (physics/unilateral.h).
-      for (int end = 0; end < 2; ++end)
-        if (c.node < 0 || c.node == end)
-          out.constraints->push_back({c.segment + end, c.normal, nodePenetration(c, rod.x, end), &c.multiplier[end]});
-      if (n.touching && (law.frictionStatic > 0 || law.frictionDynamic > 0)) {
-        out.touchedMatrix = true;
-        const Mat3 nn = c.normal * c.normal.transpose();
-        addFriction(c, n, nn, rod, law, h, out);
+      // Each node held against the plane by the solve (physics/unilateral.h),
+      // its friction capped by the multiplier of the same solve: a stick
+      // spring of ratio k times the length of rod the node stands for, as
+      // the penalty's per node, with its critical damping.
+      const std::vector<NodeFrictionMemory>& before = rod.contact.wallFrictionBefore;
+      std::vector<NodeFrictionMemory>& after = rod.contact.wallFrictionAfter;
+      for (int end = 0; end < 2; ++end) {
+        if (c.node >= 0 && c.node != end) continue;
+        const size_t i = size_t(c.segment + end);
+        NodeConstraint k{int(i), c.normal, nodePenetration(c, rod.x, end), &c.multiplier[end], {}};
+        if ((law.frictionStatic > 0 || law.frictionDynamic > 0) && i < after.size()) {
+          const double kt = law.frictionStiffnessRatio * law.stiffness * rod.nodes[i].length;
+          k.friction = {law.frictionStatic, law.frictionDynamic, kt,
+                        2 * law.dampingRatio * std::sqrt(kt * rod.nodes[i].mass),
+                        i < before.size() ? before[i] : NodeFrictionMemory{}, &after[i]};
+        }
+        out.constraints->push_back(k);
       }
       continue;
     }

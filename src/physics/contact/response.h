@@ -39,8 +39,9 @@
 //    node and plane (ContactLaw::rigid, physics/unilateral.h), solved in
 //    the same O(n) band: the penalty's largest load during a push followed
 //    its stiffness (a strike bounces on a spring the step meets only at its
-//    start), the constraint's converges with the step (docs/contact.md;
-//    not yet the default: friction under it fails the Coulomb tests).
+//    start). Friction under it is capped by the multiplier of the same
+//    solve (physics/node_friction.h). Not the default: docs/contact.md
+//    says what still fails with it.
 //  - What the diagonal blocks cannot hold: the coupling between the two
 //    segments of a self or rod contact (distant nodes: outside the block
 //    tridiagonal band). Each side treats the other as moving with its

@@ -5,6 +5,7 @@
 #include "physics/contact/detect.h"
 #include "physics/effects/builtin.h"
 #include "physics/model.h"
+#include "physics/state.h"
 
 namespace coilsim {
 namespace {
@@ -29,7 +30,7 @@ constexpr ParamSpec kParams[] = {
      10.0, 0.0, 1e4, 1e9},
     // docs/contact.md, "Why a constraint per node against the wall": with
     // the penalty the largest load of a push followed the penalty. Off by
-    // default until friction under it passes the Coulomb tests.
+    // default until the cavity pushes pass under it (same section).
     {"rigid", "1",
      "1: each node is held against the wall by a unilateral constraint, whose multiplier is the wall force "
      "(stiffness_n_mm2 then only sets friction's stick spring); 0: the penalty",
@@ -47,12 +48,32 @@ ContactLaw lawOf(std::span<const double> p) {
   return law;
 }
 
+// A wall held by constraints: what the last step's solves left each node's
+// friction becomes what this step starts from (a step retaken in substeps
+// starts from it again: the first substep does not detect). Nodes are
+// counted from the distal end, so a node inserted or withdrawn at a
+// deploying catheter tip keeps its friction.
+void keepWallFriction(State& state) {
+  for (RodState& r : state.rods) {
+    RodContacts& rc = r.contact;
+    const size_t nodes = r.x.size();
+    const int active = r.activeNodes, before = rc.wallFrictionNodes;
+    rc.wallFrictionBefore.assign(nodes, {});
+    if (rc.wallFrictionAfter.size() == nodes)
+      for (int k = 0; k < std::min(active, before); ++k)
+        rc.wallFrictionBefore[active - 1 - k] = rc.wallFrictionAfter[before - 1 - k];
+    rc.wallFrictionAfter.assign(nodes, {});
+    rc.wallFrictionNodes = active;
+  }
+}
+
 class WallContact final : public Effect {
  public:
   std::string_view name() const override { return "wall_contact"; }
   std::string_view description() const override { return "rods against the obstacle meshes, with friction"; }
   std::span<const ParamSpec> params() const override { return kParams; }
   void beginStep(const Model& model, std::span<const double> p, State& state, double h) const override {
+    if (p[kRigid] > 0.5) keepWallFriction(state);
     detectWallContacts(model, state, h, p[kMargin], lawOf(p), p[kPerRigidity]);
   }
   // A node sliding fast along a curved wall leaves the tangent plane its
