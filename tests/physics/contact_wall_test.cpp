@@ -133,13 +133,19 @@ Resting restingRod(double stiffness_n_mm2, int beams, bool contact, bool rigid =
   return r;
 }
 
+// The rod's weight, N: its lumped node masses under 9.81 m/s^2.
+double weightOf(const RodState& rod) {
+  double weight = 0;
+  for (int i = 0; i < rod.activeNodes; ++i) weight += rod.nodes[i].mass * 9.81;
+  return weight;
+}
+
 TEST(WallContactTest, RestingRodIsCarriedByItsWeightWithThePenaltyPenetration) {
   const double k = 2.0;  // N/mm2
   Resting r = restingRod(k, 20, true);
   for (int i = 0; i < 1500; ++i) ASSERT_TRUE(step(r.model, r.state).ok());
   const RodState& rod = r.state.rods[0];
-  double weight = 0;
-  for (int i = 0; i < rod.activeNodes; ++i) weight += rod.nodes[i].mass * 9.81;
+  const double weight = weightOf(rod);
   const ContactSummary s = summarizeContacts(r.state);
   EXPECT_NEAR(s.totalWallForce, weight, 1e-3 * weight);
   // Uniform line load w = weight / L on a penalty k per length: pen = w / k,
@@ -158,8 +164,7 @@ TEST(WallContactTest, RestingRodIsCarriedByItsWeightOnTheContactSurfaceUnderTheC
   Resting r = restingRod(2.0, 20, true, true);
   for (int i = 0; i < 1500; ++i) ASSERT_TRUE(step(r.model, r.state).ok());
   const RodState& rod = r.state.rods[0];
-  double weight = 0;
-  for (int i = 0; i < rod.activeNodes; ++i) weight += rod.nodes[i].mass * 9.81;
+  const double weight = weightOf(rod);
   const ContactSummary s = summarizeContacts(r.state);
   EXPECT_NEAR(s.totalWallForce, weight, 1e-3 * weight);
   const double surface = (1 + kWallSkin) * 0.15e-3;
