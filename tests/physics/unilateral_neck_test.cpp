@@ -239,7 +239,7 @@ TEST(UnilateralNeck, ThePushLeavesAsMuchCoilThroughTheNeckAsThePenaltyResolvedIn
   // the scenes' 1 ms step against the penalty resolved in time at two
   // resolutions, omega h = sqrt(k / (rho A)) h = 27 and 14 (k = 8 and
   // 2 N/mm^2, h = 0.25 ms): the wire's forces here (about a millinewton)
-  // press it less than a micrometre into either. (The registered penalty,
+  // press it a micrometre or so into either. (The registered penalty,
   // 200 N/mm^2 at 1 ms, omega h = 541, kept all of it in the sac: 0.00 mm,
   // as in the default scene's push; docs/contact.md.)
   const NeckGeometry g;
