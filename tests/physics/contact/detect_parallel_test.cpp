@@ -20,12 +20,12 @@ namespace {
 // A coil pushed into a 7 mm spherical cavity from a catheter whose drawn
 // tube is a rod of its own: wall contacts, self-contacts of the loops, and
 // rod contacts between the coil and the catheter.
-// rigid: the wall holds each node by a constraint instead of the penalty.
 struct Cavity {
   Model model;
   State state;
 };
 
+// rigid: the wall holds each node by a constraint instead of the penalty.
 std::unique_ptr<Cavity> cavity(double coilLength, int beams, bool rigid = false) {
   auto c = std::make_unique<Cavity>();
   ModelDef def;
@@ -34,7 +34,8 @@ std::unique_ptr<Cavity> cavity(double coilLength, int beams, bool rigid = false)
   def.timeStep = 1e-3;
   for (const char* name : {"gravity", "wall_contact", "self_contact", "rod_contact"})
     def.effects.push_back(EffectRegistry::global().use(name));
-  def.effects[1].set("rigid", rigid ? 1.0 : 0.0);
+  for (EffectUse& e : def.effects)
+    if (e.name() == "wall_contact") e.set("rigid", rigid ? 1.0 : 0.0);
   def.obstacles.push_back(test::obstacleOf(test::icosphere(3.5e-3, 4)));
   DeploymentDef d;
   d.coil = test::wireSpec(coilLength, test::helixRest(6e-3, 0.4e-3), 7.5e9, test::kPlatinumPoisson, 21450, 0.15e-3);
@@ -69,10 +70,10 @@ void expectSameContacts(const std::vector<ContactPoint>& a, const std::vector<Co
 // One push of a coil into the cavity, once with detection on one thread and
 // once split over two (every detection, whatever its size): the same
 // contacts in the same order and the same states, bit for bit. Under both
-// wall laws (the constraint moves each node's friction memory at
-// detection). 40 mm: the loops meet under both (30 mm under the penalty
-// only: self-contacts 652 and 0, the constraint's path keeps the first
-// loops apart; 40 mm: 6272 and 1342).
+// wall laws, each of which takes the coil its own way. 40 mm: the loops
+// meet under both (at 30 mm under the penalty only: 652 and 0
+// self-contacts, the constraint's path keeps the first loops apart; at
+// 40 mm 6272 and 1342).
 class DetectParallelTest : public ::testing::TestWithParam<bool> {};
 
 TEST_P(DetectParallelTest, TwoThreadsFindExactlyTheContactsOfOne) {
