@@ -24,9 +24,21 @@ constexpr double kRidesAlong = 0.9539;
 
 bool translationFixed(unsigned mask) { return (mask & 7u) != 0; }
 
-void copyLeading(const BlockTridiagonal& from, BlockTridiagonal& to, int n) {
-  std::copy(from.diag.begin(), from.diag.begin() + n, to.diag.begin());
-  std::copy(from.lower.begin(), from.lower.begin() + std::max(0, n - 1), to.lower.begin());
+// Keeps the blocks a constraint on node i can change (row and column i:
+// diag i, lower i - 1 and i) of the leading n nodes, once per node
+// (`byNode`: constraint indices sorted by node); the solve reads and
+// restores no others, so the rest of the band is not copied.
+void keepConstrainedBlocks(const BlockTridiagonal& from, BlockTridiagonal& to, int n,
+                           const std::vector<NodeConstraint>& c, const std::vector<int>& byNode) {
+  int last = -1;
+  for (const int j : byNode) {
+    const int i = c[j].node;
+    if (i >= n || i == last) continue;
+    last = i;
+    to.diag[i] = from.diag[i];
+    if (i > 0) to.lower[i - 1] = from.lower[i - 1];
+    if (i + 1 < n) to.lower[i] = from.lower[i];
+  }
 }
 
 using Friction = UnilateralScratch::NodeFrictionState;
@@ -123,7 +135,6 @@ std::optional<Failure> solveUnilateral(BlockTridiagonal& A, std::vector<Vec6>& r
   if (s.free.size() < A.size()) s.free.resize(A.size());
   const size_t nodes = size_t(A.size());
   if (s.known.size() < nodes) s.known.resize(nodes), s.projector.resize(nodes);
-  copyLeading(A, s.free, n);
   s.freeRhs.assign(rhs.begin(), rhs.begin() + n);
   // What each constraint asks of normal . dv: at the step's first iteration
   // the nodes are where they started and will move by h (v + dv); after
@@ -142,6 +153,7 @@ std::optional<Failure> solveUnilateral(BlockTridiagonal& A, std::vector<Vec6>& r
   s.order.resize(m);
   for (size_t j = 0; j < m; ++j) s.order[j] = int(j);
   std::stable_sort(s.order.begin(), s.order.end(), [&](int a, int b) { return c[a].node < c[b].node; });
+  keepConstrainedBlocks(A, s.free, n, c, s.order);
   for (size_t j = 0; j < m; ++j)
     if (c[j].node >= n || translationFixed(fixedMask[c[j].node])) s.active[j] = 0;
   s.friction.clear();
