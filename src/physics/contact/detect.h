@@ -112,6 +112,10 @@ double safeStaticFraction(const State& state, int rod, std::span<const Vec3> dx,
 // `margin`) are queried: a node at rest against a wall, listed but not
 // closing, that a jolt moves in within the step (up to the margin deep) is
 // caught too.
-std::optional<Failure> checkWallContacts(const Model& model, const State& state, double margin);
+// heldOnly: the wall is held by constraints (ContactLaw::rigid), so a
+// plane bounds a node only if the step's solve held the node on it (its
+// multiplier); a plane the node rode along unheld is judged as one outside
+// the solve.
+std::optional<Failure> checkWallContacts(const Model& model, const State& state, double margin, bool heldOnly);
 
 }  // namespace coilsim

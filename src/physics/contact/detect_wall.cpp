@@ -331,7 +331,7 @@ void detectWallContacts(const Model& model, State& state, double h, double margi
   }
 }
 
-std::optional<Failure> checkWallContacts(const Model& model, const State& state, double margin) {
+std::optional<Failure> checkWallContacts(const Model& model, const State& state, double margin, bool heldOnly) {
   ContactScratch& scratch = state.contactScratch;
   const std::vector<int>& candidates = scratch.candidates;
   const std::vector<SegmentTriangle>& hits = scratch.hits;
@@ -363,10 +363,11 @@ std::optional<Failure> checkWallContacts(const Model& model, const State& state,
         for (int j = 0; j < 2; ++j) {
           if (c->node >= 0 && c->node != j) continue;
           const double start = c->radius - c->normal.dot(r.work.x0[e + j] - c->anchor);
-          if (start > 0 || c->closing[j])
+          const bool inSolve = heldOnly ? c->multiplier[j] > 0 : start > 0 || c->closing[j];
+          if (inSolve)
             known[j] = std::max(known[j], c->radius - c->normal.dot(r.x[e + j] - c->anchor));
           else
-            nearestOut[j] = std::min(nearestOut[j], -start);
+            nearestOut[j] = std::min(nearestOut[j], std::max(0.0, -start));
         }
       const double tolerance = kMissedContact * radius;
       if ((a - r.work.x0[e]).norm() <= nearestOut[0] + tolerance && (b - r.work.x0[e + 1]).norm() <= nearestOut[1] + tolerance)

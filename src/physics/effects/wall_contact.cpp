@@ -80,7 +80,7 @@ class WallContact final : public Effect {
   // step was solved with: the step is retaken in substeps (detect.h).
   std::optional<Failure> endStep(const Model& model, std::span<const double> p, const State& state,
                                  double) const override {
-    return checkWallContacts(model, state, p[kMargin]);
+    return checkWallContacts(model, state, p[kMargin], p[kRigid] > 0.5);
   }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
     ContactLaw law = lawOf(p);
