@@ -30,7 +30,8 @@ constexpr ParamSpec kParams[] = {
      10.0, 0.0, 1e4, 1e9},
     // docs/contact.md, "Why a constraint per node against the wall": with
     // the penalty the largest load of a push followed the penalty. Off by
-    // default until the cavity pushes pass under it (same section).
+    // default until every test passes under it and its cost is within the
+    // issue's bound (same section, "Not the default yet").
     {"rigid", "1",
      "1: each node is held against the wall by a unilateral constraint, whose multiplier is the wall force "
      "(stiffness_n_mm2 then only sets friction's stick spring); 0: the penalty",
