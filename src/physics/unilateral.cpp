@@ -1,6 +1,7 @@
 #include "physics/unilateral.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace coilsim {
@@ -19,8 +20,9 @@ constexpr double kPullTolerance = 1e-12;
 // normals adds no direction of its own (two planes of one curved wall under
 // one node): the most demanding of them is held, the others ride along.
 constexpr double kIndependent = 0.3;
-// The cosine within which a plane rides along with another: sqrt(1 - 0.3^2).
-constexpr double kRidesAlong = 0.9539;
+// The cosine within which a plane rides along with another: its normal's
+// part across the other's is below kIndependent.
+const double kRidesAlong = std::sqrt(1 - kIndependent * kIndependent);
 
 bool translationFixed(unsigned mask) { return (mask & 7u) != 0; }
 
