@@ -3,6 +3,7 @@
 
 #include "physics/assembly.h"
 #include "physics/integrator.h"
+#include "physics/pair_coupling.h"
 #include "physics/sleep.h"
 
 namespace coilsim {
@@ -42,89 +43,151 @@ void integratePoses(RodState& r, double h) {
   }
 }
 
-StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, double h, long& iterations) {
-  const RodModel& rm = model.rods[rodIndex];
+// Newton iteration `it`'s implicit system of one rod in work.system and
+// work.rhs, its fixed DOFs applied.
+void buildSystem(const Model& model, int rodIndex, RodState& r, double time, double h, int it) {
   RodWorkspace& w = r.work;
   const double a = model.damping.massCoeff, b = model.damping.stiffnessCoeff;
   const int n = r.activeNodes;
+  // The matrix starts as (h b + h^2) K, assembled in place together with
+  // (h b + h^2) K vel for the right-hand side; the mass goes on after.
+  for (int i = 0; i < n; ++i) w.velocity[i] << r.v[i], r.w[i];
+  BlockTridiagonal& A = w.system;
+  TangentRequest tangent{&A, h * b + h * h, &w.velocity, &w.stiffnessTimesVelocity};
+  assembleRodInto(model, rodIndex, r, time + h, h, 1.0, tangent);
+  // h (b + h) K vel in the first iteration, h b K vel after it.
+  const double kRhs = h * (b + (it == 0 ? h : 0.0)) / tangent.scale;
+  for (int i = 0; i < n; ++i) {
+    const Vec6& vel = w.velocity[i];
+    const double m = r.nodes[i].mass;
+    const Mat3 inertia = nodeInertiaGlobal(r, w.q0[i], i);
+    // Mass and Rayleigh mass damping act on translation and rotation separately.
+    Vec6 massTimes;  // M (a vel) and, from the second iteration, M (vel - v0) / h
+    massTimes.head<3>() = a * m * r.v[i];
+    massTimes.tail<3>() = a * (inertia * r.w[i]);
+    if (it > 0) {
+      massTimes.head<3>() += m * (r.v[i] - w.v0[i]) / h;
+      massTimes.tail<3>() += inertia * (r.w[i] - w.w0[i]) / h;
+    }
+    Vec6& rhs = w.rhs[i];
+    rhs = h * (w.force[i] - massTimes) - kRhs * w.stiffnessTimesVelocity[i];
+    Mat6& Ad = A.diag[i];
+    Ad.topLeftCorner<3, 3>().diagonal().array() += (1 + h * a) * m;
+    Ad.bottomRightCorner<3, 3>() += (1 + h * a) * inertia;
+    // An effect's force already holds its own damping (-D v); D and K only
+    // make the matrix implicit in them.
+    if (w.effectsTouchedMatrix) {
+      Ad += h * w.effectD[i] + h * h * w.effectK[i];
+      if (it == 0) rhs.noalias() -= (h * h) * (w.effectK[i] * vel);
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    const unsigned m = w.fixedMask[i];
+    if (!m) continue;
+    for (int d = 0; d < 6; ++d)
+      if (m & (1u << d)) applyDirichlet(A, w.rhs, i, d, w.fixedValue[i][d] - w.velocity[i][d], n);
+  }
+}
+
+// Solves one rod's system alone: work.rhs becomes the velocity increment.
+std::optional<Failure> solveSystem(const RodModel& rm, RodState& r, double h, int it, bool& recovered) {
+  RodWorkspace& w = r.work;
+  const int n = r.activeNodes;
+  if (!w.unilateral.constraints.empty()) {
+    recovered = recovered || it == 0;
+    // Wall contacts held as constraints: an active-set solve on the same band (physics/unilateral.h).
+    if (std::optional<Failure> f =
+            solveUnilateral(w.system, w.rhs, n, h, &w.velocity, it == 0, w.fixedMask, w.solver, w.unilateral)) {
+      f->rod = rm.name;
+      return f;
+    }
+  } else if (!w.solver.factorize(w.system, n)) {
+    Failure f = badRod(rm.name, "implicit matrix is not positive definite");
+    f.kind = FailureKind::SolverFailure;
+    return f;
+  } else {
+    w.solver.solve(w.rhs);
+  }
+  return std::nullopt;
+}
+
+void applyIncrement(RodState& r, double h) {
+  const RodWorkspace& w = r.work;
+  for (int i = 0; i < r.activeNodes; ++i) {
+    r.v[i] += w.rhs[i].head<3>();
+    r.w[i] += w.rhs[i].tail<3>();
+  }
+  integratePoses(r, h);
+}
+
+void finishRod(RodState& r, bool recovered) {
+  RodWorkspace& w = r.work;
+  if (w.unilateral.constraints.empty()) return;
+  // A node that started the step inside a wall is carried out by the
+  // step's positions, not by a velocity it keeps (the position
+  // correction split from the velocity, as Bullet's split impulse):
+  // kept, depth / h is kinetic energy the wall gives the coil, at every
+  // step a sliding node meets the curved wall beyond its tangent plane,
+  // and h / 64 in a retaken step's substeps (physics/unilateral.h).
+  for (int i = 0; recovered && i < r.activeNodes; ++i) r.v[i] -= w.unilateral.recovery[i];
+  // The wall's force per node is its constraints' multipliers, known only now.
+  std::fill(r.contact.wallForce.begin(), r.contact.wallForce.end(), 0.0);
+  for (const NodeConstraint& c : w.unilateral.constraints)
+    if (c.force && size_t(c.node) < r.contact.wallForce.size()) r.contact.wallForce[c.node] += *c.force;
+}
+
+StepReport stepRod(const Model& model, int rodIndex, RodState& r, double time, double h, long& iterations) {
+  const RodModel& rm = model.rods[rodIndex];
   collectFixedDofs(rm, r);
   prescribedVelocities(rm, r, h);
-
   bool recovered = false;  // the first iteration's solve held nodes (UnilateralScratch::recovery)
   for (int it = 0; it < model.newtonIterations; ++it) {
     ++iterations;
-    // The matrix starts as (h b + h^2) K, assembled in place together with
-    // (h b + h^2) K vel for the right-hand side; the mass goes on after.
-    for (int i = 0; i < n; ++i) w.velocity[i] << r.v[i], r.w[i];
-    BlockTridiagonal& A = w.system;
-    TangentRequest tangent{&A, h * b + h * h, &w.velocity, &w.stiffnessTimesVelocity};
-    assembleRodInto(model, rodIndex, r, time + h, h, 1.0, tangent);
-    // h (b + h) K vel in the first iteration, h b K vel after it.
-    const double kRhs = h * (b + (it == 0 ? h : 0.0)) / tangent.scale;
-    for (int i = 0; i < n; ++i) {
-      const Vec6& vel = w.velocity[i];
-      const double m = r.nodes[i].mass;
-      const Mat3 inertia = nodeInertiaGlobal(r, w.q0[i], i);
-      // Mass and Rayleigh mass damping act on translation and rotation separately.
-      Vec6 massTimes;  // M (a vel) and, from the second iteration, M (vel - v0) / h
-      massTimes.head<3>() = a * m * r.v[i];
-      massTimes.tail<3>() = a * (inertia * r.w[i]);
-      if (it > 0) {
-        massTimes.head<3>() += m * (r.v[i] - w.v0[i]) / h;
-        massTimes.tail<3>() += inertia * (r.w[i] - w.w0[i]) / h;
-      }
-      Vec6& rhs = w.rhs[i];
-      rhs = h * (w.force[i] - massTimes) - kRhs * w.stiffnessTimesVelocity[i];
-      Mat6& Ad = A.diag[i];
-      Ad.topLeftCorner<3, 3>().diagonal().array() += (1 + h * a) * m;
-      Ad.bottomRightCorner<3, 3>() += (1 + h * a) * inertia;
-      // An effect's force already holds its own damping (-D v); D and K only
-      // make the matrix implicit in them.
-      if (w.effectsTouchedMatrix) {
-        Ad += h * w.effectD[i] + h * h * w.effectK[i];
-        if (it == 0) rhs.noalias() -= (h * h) * (w.effectK[i] * vel);
-      }
-    }
-    for (int i = 0; i < n; ++i) {
-      const unsigned m = w.fixedMask[i];
-      if (!m) continue;
-      for (int d = 0; d < 6; ++d)
-        if (m & (1u << d)) applyDirichlet(A, w.rhs, i, d, w.fixedValue[i][d] - w.velocity[i][d], n);
-    }
-    if (!w.unilateral.constraints.empty()) {
-      recovered = recovered || it == 0;
-      // Wall contacts held as constraints: an active-set solve on the same band (physics/unilateral.h).
-      if (std::optional<Failure> f = solveUnilateral(A, w.rhs, n, h, &w.velocity, it == 0, w.fixedMask, w.solver,
-                                                          w.unilateral)) {
-        f->rod = rm.name;
-        return {std::move(*f)};
-      }
-    } else if (!w.solver.factorize(A, n)) {
-      Failure f = badRod(rm.name, "implicit matrix is not positive definite");
-      f.kind = FailureKind::SolverFailure;
-      return {std::move(f)};
-    } else {
-      w.solver.solve(w.rhs);
-    }
-    for (int i = 0; i < n; ++i) {
-      r.v[i] += w.rhs[i].head<3>();
-      r.w[i] += w.rhs[i].tail<3>();
-    }
-    integratePoses(r, h);
+    buildSystem(model, rodIndex, r, time, h, it);
+    if (std::optional<Failure> f = solveSystem(rm, r, h, it, recovered)) return {std::move(*f)};
+    applyIncrement(r, h);
   }
-  if (!w.unilateral.constraints.empty()) {
-    // A node that started the step inside a wall is carried out by the
-    // step's positions, not by a velocity it keeps (the position
-    // correction split from the velocity, as Bullet's split impulse):
-    // kept, depth / h is kinetic energy the wall gives the coil, at every
-    // step a sliding node meets the curved wall beyond its tangent plane,
-    // and h / 64 in a retaken step's substeps (physics/unilateral.h).
-    for (int i = 0; recovered && i < n; ++i) r.v[i] -= w.unilateral.recovery[i];
-    // The wall's force per node is its constraints' multipliers, known only now.
-    std::fill(r.contact.wallForce.begin(), r.contact.wallForce.end(), 0.0);
-    for (const NodeConstraint& c : w.unilateral.constraints)
-      if (c.force && size_t(c.node) < r.contact.wallForce.size()) r.contact.wallForce[c.node] += *c.force;
+  finishRod(r, recovered);
+  return {};
+}
+
+bool stepped(const RodState& r) { return r.active && !r.asleep; }
+
+// Whether this step solves its pair contacts with both sides moving
+// (physics/pair_coupling.h): the model asks for it, some stepped rod has
+// one, and no effect holds nodes by constraints (each rod's solve is then
+// an active-set solve of its own, and the pairs are lumped).
+bool couplesPairs(const Model& model, const State& state) {
+  if (!model.coupledPairs) return false;
+  for (const EffectUse& u : model.effects)
+    if (u.enabled && u.effect->constrainsNodes(u.values)) return false;
+  for (const RodState& r : state.rods)
+    if (stepped(r) && (!r.contact.self.empty() || !r.contact.rod.empty())) return true;
+  return false;
+}
+
+// Every stepped rod in one solve, its pair contacts coupled.
+StepReport stepCoupled(const Model& model, State& state, double time, double h, long& iterations) {
+  std::vector<char>& on = state.pairSolve.stepped;
+  on.assign(state.rods.size(), 0);
+  for (size_t k = 0; k < state.rods.size(); ++k) {
+    RodState& r = state.rods[k];
+    if (!stepped(r)) continue;
+    on[k] = 1;
+    collectFixedDofs(model.rods[k], r);
+    prescribedVelocities(model.rods[k], r, h);
+    r.work.pairsCoupled = true;
   }
+  std::optional<Failure> failure;
+  for (int it = 0; it < model.newtonIterations && !failure; ++it) {
+    for (size_t k = 0; k < state.rods.size(); ++k)
+      if (on[k]) ++iterations, buildSystem(model, int(k), state.rods[k], time, h, it);
+    failure = solvePairsCoupled(model, state.rods, on, h, it == 0, state.pairSolve, state.stats.pairSolve);
+    for (size_t k = 0; k < state.rods.size() && !failure; ++k)
+      if (on[k]) applyIncrement(state.rods[k], h);
+  }
+  for (RodState& r : state.rods) r.work.pairsCoupled = false;
+  if (failure) return {std::move(*failure)};
   return {};
 }
 
@@ -178,8 +241,11 @@ StepReport attempt(const Model& model, State& state, double h, bool detect, bool
     for (const EffectUse& u : model.effects)
       if (u.enabled) u.effect->beginStep(model, u.values, state, h);
   StepReport report;
-  for (size_t k = 0; k < model.rods.size() && report.ok(); ++k)
-    if (state.rods[k].active && !state.rods[k].asleep) report = stepRod(model, int(k), state.rods[k], state.time, h, iterations);
+  if (couplesPairs(model, state))
+    report = stepCoupled(model, state, state.time, h, iterations);
+  else
+    for (size_t k = 0; k < model.rods.size() && report.ok(); ++k)
+      if (stepped(state.rods[k])) report = stepRod(model, int(k), state.rods[k], state.time, h, iterations);
   if (report.ok()) report.failure = checkHealth(model, state);
   for (size_t k = 0; k < model.effects.size() && verify && report.ok(); ++k)
     if (model.effects[k].enabled)

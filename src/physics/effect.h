@@ -17,6 +17,7 @@
 #include "physics/failure.h"
 #include "physics/math.h"
 #include "physics/node_friction.h"
+#include "physics/pair_coupling.h"
 #include "physics/param.h"
 
 namespace coilsim {
@@ -82,6 +83,10 @@ struct RodForces {
   std::vector<NodeCoupling>* coupling = nullptr;
   // Unilateral constraints on nodes, set in a dynamic step only.
   std::vector<NodeConstraint>* constraints = nullptr;
+  // Pair contacts solved with both sides moving (physics/pair_coupling.h),
+  // set in a dynamic step that couples them: a pair contact then writes its
+  // coupling here instead of lumping its stiffness onto the diagonal.
+  std::vector<PairCoupling>* pairs = nullptr;
 };
 
 // What the workbench knows of a bench setup when it asks an effect how to
@@ -121,6 +126,11 @@ class Effect {
   // Adds this effect's forces (and their derivatives where they matter for
   // stability) for one rod. `values` are SI, one per params() entry.
   virtual void apply(const EffectContext& ctx, std::span<const double> values, RodForces& out) const = 0;
+  // Whether this effect holds nodes by unilateral constraints in a dynamic
+  // step (RodForces::constraints): each rod's solve is then an active-set
+  // solve of its own, and pair contacts are lumped rather than coupled
+  // (physics/pair_coupling.h). Default: no.
+  virtual bool constrainsNodes(std::span<const double>) const { return false; }
   // Potential energy of a conservative effect (J), for energy bookkeeping.
   virtual double energy(const EffectContext&, std::span<const double>) const { return 0; }
   // Called once at the start of each dynamic step (of length h: a

@@ -107,6 +107,7 @@ Model compileModel(const ModelDef& def) {
   m.sleep = def.sleep;
   m.timeStep = def.timeStep;
   m.newtonIterations = def.newtonIterations;
+  m.coupledPairs = def.coupledPairs;
   m.health = def.health;
   m.effects = def.effects;
   for (const Obstacle& o : def.obstacles) {

@@ -90,6 +90,11 @@ struct ModelDef {
   Damping damping;
   double timeStep = 1e-3;            // s
   int newtonIterations = 1;          // per dynamic step (1 = linearly implicit Euler)
+  // Self and rod contacts solved with both sides moving (physics/pair_coupling.h),
+  // an experiment that is off: with it a dense packing does not settle
+  // (docs/contact.md, "Pair contacts solved coupled"). Off: each side holds
+  // the other at its start (the lumped diagonal).
+  bool coupledPairs = false;
   HealthLimits health;
   std::vector<EffectUse> effects;    // gravity is one of them
   std::vector<Obstacle> obstacles;   // walls the rods may touch (contact effects read them)
@@ -105,6 +110,7 @@ struct Model {
   Damping damping;
   double timeStep = 1e-3;
   int newtonIterations = 1;
+  bool coupledPairs = false;
   HealthLimits health;
   std::vector<EffectUse> effects;
   std::vector<Obstacle> obstacles;

@@ -39,6 +39,10 @@ struct RodWorkspace {
   std::vector<unsigned> fixedMask;  // (nnode) constrained DOFs (of active nodes)
   std::vector<Vec6> fixedValue;     // (nnode) prescribed increments of constrained DOFs
   UnilateralScratch unilateral;     // the effects' node constraints and their solve (wall contact)
+  // Pair contacts coupled across rods (physics/pair_coupling.h): whether
+  // this assembly asks the effects for their couplings, and what they gave.
+  bool pairsCoupled = false;
+  std::vector<PairCoupling> pairs;
 };
 
 struct RodState {
@@ -83,6 +87,7 @@ struct StepStats {
   double maxWallPenetration = 0, maxWallPenetrationOfRadius = 0;
   // The sustained wall load (physics/contact/wall_load.h), updated after every step taken.
   WallLoad wallLoad;
+  PairSolveStats pairSolve;  // the coupled pair contacts' solves (physics/pair_coupling.h)
 };
 
 struct State {
@@ -97,6 +102,7 @@ struct State {
   // Contact detection's scratch; mutable because the end-of-step checks and
   // the static update limits query the wall from a const State.
   mutable ContactScratch contactScratch;
+  PairSolveScratch pairSolve;  // the coupled solve's scratch (physics/pair_coupling.h)
 };
 
 // A State at rest in the model's rest shape, constraint targets at the rest

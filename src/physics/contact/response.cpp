@@ -251,6 +251,36 @@ void addFriction(const ContactPoint& c, const NormalEval& n, const Mat3& nn, con
   out.damping[node[1]].topLeftCorner<3, 3>() += wb * d;
 }
 
+// A pair contact (self or rod) whose two sides are solved together
+// (physics/pair_coupling.h): the same normal force as applyContacts gives,
+// and its coupling instead of the lumped diagonal. Friction stays lumped
+// (each side holding the other at its start).
+void applyCoupledPair(const ContactPoint& c, const NormalEval& n, const RodState& rod, const ContactLaw& law, double h,
+                      RodForces& out) {
+  const double pointDamping = 2 * law.dampingRatio * std::sqrt(law.stiffness * nodeMass(c, rod, 1 - c.s, c.s));
+  const double approach = c.normal.dot(relativeVelocity(c, rod, c.s));
+  const int node[2] = {c.segment, c.segment + 1};
+  const double fe[2] = {n.fa, n.fb}, ke[2] = {n.ka, n.kb};
+  for (int end = 0; end < 2; ++end) {
+    if (ke[end] <= 0) continue;
+    const double share = end ? c.s : 1 - c.s;
+    double fn = fe[end] - share * pointDamping * approach;
+    if (fe[end] > 0) fn = std::max(0.0, fn);
+    out.force[node[end]].head<3>() += fn * c.normal;
+  }
+  PairCoupling p;
+  p.otherRod = c.other;
+  p.segment = c.segment, p.otherSegment = c.otherSegment;
+  p.s = c.s, p.otherS = c.otherS;
+  p.normal = c.normal;
+  p.normalStiffness = law.stiffness, p.normalDamping = pointDamping;
+  out.pairs->push_back(p);
+  if (law.frictionStatic > 0 || law.frictionDynamic > 0) {
+    out.touchedMatrix = true;
+    addFriction(c, n, c.normal * c.normal.transpose(), rod, law, h, out);
+  }
+}
+
 }  // namespace
 
 void applyContacts(std::span<const ContactPoint> contacts, const EffectContext& ctx, const ContactLaw& law,
@@ -285,6 +315,10 @@ void applyContacts(std::span<const ContactPoint> contacts, const EffectContext& 
       continue;
     }
     if (!n.touching) continue;
+    if (out.pairs && !c.line) {
+      applyCoupledPair(c, n, rod, law, h, out);
+      continue;
+    }
     const int node[2] = {c.segment, c.segment + 1};
     const double fe[2] = {n.fa, n.fb}, ke[2] = {n.ka, n.kb};
     // A wall node that this iterate found in the wall stays in the solve

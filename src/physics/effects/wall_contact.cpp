@@ -83,6 +83,7 @@ class WallContact final : public Effect {
                                  double) const override {
     return checkWallContacts(model, state, p[kMargin], p[kRigid] > 0.5);
   }
+  bool constrainsNodes(std::span<const double> p) const override { return p[kRigid] > 0.5; }
   void apply(const EffectContext& c, std::span<const double> p, RodForces& out) const override {
     ContactLaw law = lawOf(p);
     law.stiffness = wallStiffness(law.stiffness, p[kPerRigidity], c.rod);
