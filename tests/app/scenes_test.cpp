@@ -214,6 +214,71 @@ TEST_P(ContactScene, ShortenedDeploymentKeepsTheCoilInTheSac) {
               c.maxFromCentre, info.sacRadii.x(), c.minAboveNeck, sag, c.beyondNeck);
 }
 
+// The scene with its wall's law set: held by constraints (rigid), or a
+// penalty soft enough for the scene's step to resolve: omega h =
+// sqrt(k / (rho A)) h about 54 for these coils at 2 N/mm^2 and 1 ms
+// (docs/contact.md: every penalty with omega h up to about 50 ends a push
+// where the constraint does; the registered 200 N/mm^2, omega h 541,
+// chatters). Two laws that share no code: an active set on the band, and a
+// spring on its diagonal.
+fs::path withWallLaw(const fs::path& scene, const std::string& name, bool rigid) {
+  json spec = readJson(scene);
+  for (json& o : spec["obstacles"])
+    if (o.contains("mesh") && fs::path(o["mesh"].get<std::string>()).is_relative())
+      o["mesh"] = (scene.parent_path() / o["mesh"].get<std::string>()).lexically_normal().string();
+  json& wall = spec["effects"]["wall_contact"];
+  wall["rigid"] = rigid ? 1 : 0;
+  if (!rigid) wall["stiffness_n_mm2"] = 2.0, wall["stiffness_per_rigidity_1_mm3"] = 0.1;
+  const fs::path out = scratch((rigid ? "constraint_" : "resolved_") + name) / "scene.json";
+  std::ofstream(out) << spec.dump(2);
+  return out;
+}
+
+// The shortened deployment above with the wall held by constraints (not
+// the shipped default yet): where the coil ends and the largest sustained
+// wall load are the converged wall's, those of the same push with the
+// penalty resolved in time, within 0.5 mm of coil beyond the neck and
+// 15 % of the load. In the two sidewall scenes about half the push goes
+// back through the 3.5 mm neck under both (docs/contact.md, "Under the
+// constraint the push ends with half the coil back in the parent vessel");
+// the registered penalty at 1 ms keeps it in the sac and fails here (the
+// default scene: 2.6 mm beyond the neck and 35 mN, against 14.8 mm and
+// 0.78 mN). The
+// bounds of the test above that do not depend on where the coil ends hold
+// under the constraint too.
+TEST_P(ContactScene, ShortenedDeploymentUnderTheWallConstraintEndsWhereTheResolvedPenaltyEndsIt) {
+  const SceneCase sc = GetParam();
+  const fs::path scene = fs::path(kSource) / "scenes" / sc.scene;
+  const json spec = readJson(scene);
+  const double r = spec["deployment"]["coil"]["section"]["outer_radius_mm"].get<double>();
+  const std::string timeline = R"({"format": "coilsim-timeline/1", "commands": [
+                                     {"t_s": 0, "push": {"speed_mm_s": 10, "distance_mm": 30}}]})";
+  json result, reference;
+  const CoilCheck c = deployInto(std::string("constraint_") + sc.scene, withWallLaw(scene, sc.scene, true), timeline,
+                                 3.3, kCatalogue / sc.mesh, result);
+  const CoilCheck soft = deployInto(std::string("resolved_") + sc.scene, withWallLaw(scene, sc.scene, false), timeline,
+                                    3.3, kCatalogue / sc.mesh, reference);
+  ASSERT_FALSE(result.is_null());
+  ASSERT_FALSE(reference.is_null());
+  EXPECT_EQ(result["status"], "ok");
+  EXPECT_EQ(result["stats"]["blowups"], 0);
+  const double initial = spec["deployment"].value("initial_deployed_mm", 0.0);
+  EXPECT_NEAR(result["deployment"]["deployed_mm"].get<double>(), initial + 30.0, 1e-9);
+  EXPECT_GE(c.nodes, 61);
+  EXPECT_GE(c.minDepth, 0.9 * r);  // the wire inside the surface: penetration below 10 % of its radius
+  EXPECT_LT(result["stats"]["max_wall_penetration_of_radius"].get<double>(), 0.1);
+  EXPECT_EQ(c.beyondNeck > 0, c.minAboveNeck < 0) << c.beyondNeck << " mm beyond the neck plane (planning)";
+  const json &got = result["readouts"], &want = reference["readouts"];
+  const double beyond = got["protruding_length_mm"].get<double>(), beyondRef = want["protruding_length_mm"].get<double>();
+  const double load = got["largest_wall_load_mN"].get<double>(), loadRef = want["largest_wall_load_mN"].get<double>();
+  EXPECT_NEAR(beyond, beyondRef, 0.5) << "coil beyond the neck, mm";
+  EXPECT_NEAR(c.beyondNeck, soft.beyondNeck, 0.5) << "planning's measure on the nodes, mm";
+  EXPECT_NEAR(load, loadRef, 0.15 * loadRef) << "largest sustained wall load, mN";
+  std::printf("[ measured ] %s under the constraint: %.3f mm of coil beyond the neck, largest sustained wall load "
+              "%.3f mN; the penalty resolved in time (omega h about 54): %.3f mm, %.3f mN\n",
+              sc.scene, beyond, load, beyondRef, loadRef);
+}
+
 // The same deployment in this process, measured at the end of every step
 // against the phantom's STL itself (the test's own signed distance, not
 // the contact code): at no step may the wire of any node or segment
