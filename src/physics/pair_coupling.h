@@ -55,7 +55,7 @@ struct PairSolveScratch {
   };
   struct Row {
     int first = 0, count = 0;   // entries[first, first + count)
-    double compliance = 0;      // 1 / q, s^2 / kg... (1 / kg in the velocity form)
+    double compliance = 0;      // 1 / q, 1/kg (q = h^2 k + h c in the velocity form)
     double diagonal = 0;        // the preconditioner's estimate of the Schur complement's diagonal
   };
   std::vector<Entry> entries;
