@@ -120,11 +120,9 @@ Problem makeProblem(int rodCount, int nodes, int pairs, bool withFixed, bool wit
     }
     // The reference: q beta beta^T in the matrix, -h^2 k beta (beta . v) in the right-hand side.
     const Vec3& n = pc.normal;
-    const Vec3 t1 = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
     const Eigen::Matrix3d tangent = Eigen::Matrix3d::Identity() - n * n.transpose();
     const Eigen::Matrix3d K = pc.normalStiffness * n * n.transpose() + pc.tangentStiffness * tangent;
     const Eigen::Matrix3d D = pc.normalDamping * n * n.transpose() + pc.tangentDamping * tangent;
-    (void)t1;
     Eigen::MatrixXd beta = Eigen::MatrixXd::Zero(3, dofs);
     const auto put = [&](int rod, int node, double w) {
       if (p.stepped[size_t(rod)]) beta.block<3, 3>(0, p.offset[size_t(rod)] + 6 * node) += w * Eigen::Matrix3d::Identity();
