@@ -1,5 +1,6 @@
 #include "physics/pair_coupling.h"
 
+#include <Eigen/SparseCholesky>
 #include <cmath>
 
 #include "physics/state.h"
@@ -7,9 +8,6 @@
 namespace coilsim {
 namespace {
 
-// Conjugate gradients stop at this residual relative to the right-hand side's.
-constexpr double kTolerance = 1e-10;
-constexpr int kMaxIterations = 1000;
 
 // Whether rod k's side of a coupling is the one that adds it: each pair
 // contact sits in both sides' lists, and is added once.
@@ -22,7 +20,7 @@ bool addsIt(int k, const PairCoupling& c, std::span<const char> stepped) {
 
 // One row per direction of each coupling: its entries (fixed DOFs taken
 // out, their prescribed increments moved to the right-hand side), its
-// compliance, and in the first Newton iteration the h^2 K v term of the
+// stiffness q, and in the first Newton iteration the h^2 K v term of the
 // right-hand side, which needs both sides' velocities.
 void buildRows(std::vector<RodState>& rods, std::span<const char> stepped, double h, bool firstIteration,
                PairSolveScratch& s) {
@@ -51,7 +49,7 @@ void buildRows(std::vector<RodState>& rods, std::span<const char> stepped, doubl
         if (!(q > 0)) continue;
         PairSolveScratch::Row row;
         row.first = int(s.entries.size());
-        row.compliance = 1 / q;
+        row.stiffness = q;
         double fixedPart = 0, relative = 0;
         for (int e = 0; e < count; ++e) {
           const Side& side = sides[e];
@@ -70,50 +68,14 @@ void buildRows(std::vector<RodState>& rods, std::span<const char> stepped, doubl
         if (row.count == 0) continue;
         // rhs -= h^2 k beta (beta . v) and the fixed increments' column q beta (beta_fixed . dv_fixed).
         const double shift = -(firstIteration ? h * h * stiffness[d] * relative : 0.0) - q * fixedPart;
-        double diagonal = row.compliance;
         for (int e = row.first; e < row.first + row.count; ++e) {
           const PairSolveScratch::Entry& en = s.entries[size_t(e)];
-          RodWorkspace& w = rods[size_t(en.rod)].work;
-          w.rhs[size_t(en.node)].head<3>() += shift * en.coeff;
-          // The compliance of the node alone (its diagonal block's
-          // translation), a lower bound of what the whole rod gives.
-          const Mat3 block = w.system.diag[size_t(en.node)].topLeftCorner<3, 3>();
-          diagonal += en.coeff.dot(block.ldlt().solve(en.coeff));
+          rods[size_t(en.rod)].work.rhs[size_t(en.node)].head<3>() += shift * en.coeff;
         }
-        row.diagonal = diagonal;
         s.rows.push_back(row);
       }
     }
   }
-}
-
-// work[k] = B^T p on the rods the rows touch.
-void scatter(const PairSolveScratch& s, std::span<const double> p, std::vector<std::vector<Vec6>>& work,
-             const std::vector<RodState>& rods) {
-  for (size_t k = 0; k < rods.size(); ++k)
-    if (s.touched[k]) std::fill(work[k].begin(), work[k].begin() + rods[k].activeNodes, Vec6::Zero());
-  for (size_t r = 0; r < s.rows.size(); ++r) {
-    const PairSolveScratch::Row& row = s.rows[r];
-    for (int e = row.first; e < row.first + row.count; ++e) {
-      const PairSolveScratch::Entry& en = s.entries[size_t(e)];
-      work[size_t(en.rod)][size_t(en.node)].head<3>() += p[r] * en.coeff;
-    }
-  }
-}
-
-double gather(const PairSolveScratch& s, const PairSolveScratch::Row& row, const std::vector<std::vector<Vec6>>& v) {
-  double sum = 0;
-  for (int e = row.first; e < row.first + row.count; ++e) {
-    const PairSolveScratch::Entry& en = s.entries[size_t(e)];
-    sum += en.coeff.dot(v[size_t(en.rod)][size_t(en.node)].head<3>());
-  }
-  return sum;
-}
-
-// work[k] = A_k^-1 work[k] on the touched rods.
-void backSubstitute(const PairSolveScratch& s, std::vector<RodState>& rods, std::vector<std::vector<Vec6>>& work) {
-  for (size_t k = 0; k < rods.size(); ++k)
-    if (s.touched[k]) rods[k].work.solver.solve(work[k]);
 }
 
 Failure solverFailure(const Model& model, int rod, std::string text) {
@@ -122,85 +84,76 @@ Failure solverFailure(const Model& model, int rod, std::string text) {
   return f;
 }
 
+using Triplet = Eigen::Triplet<double>;
+
+// The lower triangle of rod k's band, its unknowns from `first` on.
+void addBand(const RodState& r, int first, std::vector<Triplet>& out) {
+  const BlockTridiagonal& a = r.work.system;
+  for (int i = 0; i < r.activeNodes; ++i) {
+    const int at = first + 6 * i;
+    for (int col = 0; col < 6; ++col)
+      for (int row = col; row < 6; ++row)
+        if (a.diag[size_t(i)](row, col) != 0) out.emplace_back(at + row, at + col, a.diag[size_t(i)](row, col));
+    if (i + 1 < r.activeNodes)
+      for (int col = 0; col < 6; ++col)
+        for (int row = 0; row < 6; ++row)
+          if (a.lower[size_t(i)](row, col) != 0) out.emplace_back(at + 6 + row, at + col, a.lower[size_t(i)](row, col));
+  }
+}
+
 }  // namespace
 
 std::optional<Failure> solvePairsCoupled(const Model& model, std::vector<RodState>& rods, std::span<const char> stepped,
                                          double h, bool firstIteration, PairSolveScratch& s, PairSolveStats& stats) {
   buildRows(rods, stepped, h, firstIteration, s);
+  ++stats.solves;
+  stats.rows += long(s.rows.size());
+  // Rods no row touches: their own band, as a lumped step solves it.
   for (size_t k = 0; k < rods.size(); ++k) {
-    if (!stepped[k]) continue;
+    if (!stepped[k] || s.touched[k]) continue;
     RodWorkspace& w = rods[k].work;
     if (!w.solver.factorize(w.system, rods[k].activeNodes))
       return solverFailure(model, int(k), "implicit matrix is not positive definite");
-    w.solver.solve(w.rhs);  // y = A^-1 rhs
+    w.solver.solve(w.rhs);
   }
-  const size_t m = s.rows.size();
-  ++stats.solves;
-  stats.rows += long(m);
-  if (m == 0) return std::nullopt;
-  s.work.resize(rods.size());
+  if (s.rows.empty()) return std::nullopt;
+  // The touched rods one after another, each node's six unknowns together.
+  s.offset.assign(rods.size(), -1);
+  int unknowns = 0;
   for (size_t k = 0; k < rods.size(); ++k)
-    if (s.touched[k] && s.work[k].size() < rods[k].x.size()) s.work[k].assign(rods[k].x.size(), Vec6::Zero());
-  s.lambda.assign(m, 0.0);
-  s.residual.resize(m), s.direction.resize(m), s.product.resize(m), s.precond.resize(m);
-  // b = B y; lambda = 0, so the residual is b.
-  double bNorm = 0;
-  for (size_t r = 0; r < m; ++r) {
-    double b = 0;
-    const PairSolveScratch::Row& row = s.rows[r];
+    if (s.touched[k]) s.offset[k] = unknowns, unknowns += 6 * rods[k].activeNodes;
+  std::vector<Triplet> triplets;
+  for (size_t k = 0; k < rods.size(); ++k)
+    if (s.touched[k]) addBand(rods[k], s.offset[k], triplets);
+  // Each row's q beta beta^T, lower triangle (its entries' translations).
+  for (const PairSolveScratch::Row& row : s.rows)
     for (int e = row.first; e < row.first + row.count; ++e) {
-      const PairSolveScratch::Entry& en = s.entries[size_t(e)];
-      b += en.coeff.dot(rods[size_t(en.rod)].work.rhs[size_t(en.node)].head<3>());
+      const PairSolveScratch::Entry& a = s.entries[size_t(e)];
+      const int ia = s.offset[size_t(a.rod)] + 6 * a.node;
+      for (int f = row.first; f < row.first + row.count; ++f) {
+        const PairSolveScratch::Entry& b = s.entries[size_t(f)];
+        const int ib = s.offset[size_t(b.rod)] + 6 * b.node;
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j)
+            if (ia + i >= ib + j && a.coeff[i] * b.coeff[j] != 0)
+              triplets.emplace_back(ia + i, ib + j, row.stiffness * a.coeff[i] * b.coeff[j]);
+      }
     }
-    s.residual[r] = b;
-    bNorm += b * b;
-  }
-  bNorm = std::sqrt(bNorm);
-  if (!(bNorm > 0)) return std::nullopt;
-  double rz = 0;
-  for (size_t r = 0; r < m; ++r) {
-    s.precond[r] = s.residual[r] / s.rows[r].diagonal;
-    s.direction[r] = s.precond[r];
-    rz += s.residual[r] * s.precond[r];
-  }
-  int it = 0;
-  for (;; ++it) {
-    double rr = 0;
-    for (double v : s.residual) rr += v * v;
-    if (std::sqrt(rr) <= kTolerance * bNorm) break;
-    if (it == kMaxIterations || !std::isfinite(rr))
-      return solverFailure(model, s.entries.front().rod,
-                           "pair contacts: the coupled solve did not converge in " + std::to_string(kMaxIterations) +
-                               " iterations");
-    scatter(s, s.direction, s.work, rods);
-    backSubstitute(s, rods, s.work);
-    double pAp = 0;
-    for (size_t r = 0; r < m; ++r) {
-      s.product[r] = s.rows[r].compliance * s.direction[r] + gather(s, s.rows[r], s.work);
-      pAp += s.direction[r] * s.product[r];
-    }
-    const double alpha = rz / pAp;
-    double rzNew = 0;
-    for (size_t r = 0; r < m; ++r) {
-      s.lambda[r] += alpha * s.direction[r];
-      s.residual[r] -= alpha * s.product[r];
-      s.precond[r] = s.residual[r] / s.rows[r].diagonal;
-      rzNew += s.residual[r] * s.precond[r];
-    }
-    const double beta = rzNew / rz;
-    rz = rzNew;
-    for (size_t r = 0; r < m; ++r) s.direction[r] = s.precond[r] + beta * s.direction[r];
-  }
-  stats.iterations += it;
-  stats.maxIterations = std::max(stats.maxIterations, it);
-  // dv = y - A^-1 B^T lambda.
-  scatter(s, s.lambda, s.work, rods);
-  backSubstitute(s, rods, s.work);
-  for (size_t k = 0; k < rods.size(); ++k) {
-    if (!s.touched[k]) continue;
-    std::vector<Vec6>& rhs = rods[k].work.rhs;
-    for (int i = 0; i < rods[k].activeNodes; ++i) rhs[size_t(i)] -= s.work[k][size_t(i)];
-  }
+  Eigen::SparseMatrix<double> matrix(unknowns, unknowns);
+  matrix.setFromTriplets(triplets.begin(), triplets.end());
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> factor(matrix);
+  const int first = s.entries.front().rod;
+  if (factor.info() != Eigen::Success || !(factor.vectorD().minCoeff() > 0))
+    return solverFailure(model, first, "pair contacts: the coupled implicit matrix is not positive definite");
+  Eigen::VectorXd rhs(unknowns);
+  for (size_t k = 0; k < rods.size(); ++k)
+    for (int i = 0; s.touched[k] && i < rods[k].activeNodes; ++i)
+      rhs.segment<6>(s.offset[k] + 6 * i) = rods[k].work.rhs[size_t(i)];
+  const Eigen::VectorXd dv = factor.solve(rhs);
+  if (!dv.allFinite()) return solverFailure(model, first, "pair contacts: the coupled solve gave non-finite velocities");
+  for (size_t k = 0; k < rods.size(); ++k)
+    for (int i = 0; s.touched[k] && i < rods[k].activeNodes; ++i)
+      rods[k].work.rhs[size_t(i)] = dv.segment<6>(s.offset[k] + 6 * i);
   return std::nullopt;
 }
 

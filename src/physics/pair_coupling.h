@@ -12,15 +12,17 @@
 // per direction,
 //   q beta beta^T,  beta = ((1 - s) d, s d, -(1 - t) d, -t d) on its four nodes,
 // with q = h^2 k + h c along the normal d = n (and across it when a
-// coupling carries a tangential law), is added to the rods' bands A and the whole system
+// coupling carries a tangential law), is added to the rods' bands A, and the
+// whole system
 //   (A + B^T Q B) dv = rhs
-// is solved through its Schur complement on the contacts (Woodbury):
-//   (Q^-1 + B A^-1 B^T) lambda = B A^-1 rhs,   dv = A^-1 (rhs - B^T lambda),
-// by conjugate gradients, each product one back-substitution of every rod's
-// own O(n) factorisation. Common motion of touching sides lies in B's null
-// space: it no longer meets the penalty, only the rods' own inertia and
-// stiffness (which is why the system on the contacts is well conditioned,
-// where conjugate gradients on the whole system faced k against m / h^2).
+// of the rods the contacts touch is factorised as one sparse matrix
+// (Eigen's simplicial LDL^T, fill-reducing AMD ordering: the bands are
+// chains, the contacts a few hundred links between them). Conjugate
+// gradients on its Schur complement on the contacts, tried first, needed
+// up to 1000 iterations in a packing: the contacts' compliance 1 / (h^2 k)
+// is 20 /kg against 1e7 /kg for a free node, and rows sharing nodes leave
+// the complement badly conditioned for any diagonal preconditioner
+// (docs/contact.md). Rods no contact touches are solved by their own band.
 #include <optional>
 #include <span>
 #include <vector>
@@ -54,31 +56,27 @@ struct PairSolveScratch {
     Vec3 coeff = Vec3::Zero();  // beta's translational part at this node (fixed components zero)
   };
   struct Row {
-    int first = 0, count = 0;   // entries[first, first + count)
-    double compliance = 0;      // 1 / q, 1/kg (q = h^2 k + h c in the velocity form)
-    double diagonal = 0;        // the preconditioner's estimate of the Schur complement's diagonal
+    int first = 0, count = 0;  // entries[first, first + count)
+    double stiffness = 0;      // q = h^2 k + h c in the velocity form, kg
   };
   std::vector<Entry> entries;
   std::vector<Row> rows;
-  std::vector<double> lambda, residual, direction, product, precond;
-  std::vector<std::vector<Vec6>> work;  // (nrod) one back-substitution's right-hand side per rod
-  std::vector<char> touched;            // (nrod) rods that some row touches
-  std::vector<char> stepped;            // (nrod) rods the step integrates (dynamics.cpp)
+  std::vector<char> touched;  // (nrod) rods that some row touches
+  std::vector<int> offset;    // (nrod) a touched rod's first unknown in the whole system
+  std::vector<char> stepped;  // (nrod) rods the step integrates (dynamics.cpp)
 };
 
 // Counters of the coupled solves, for the bench and the tests.
 struct PairSolveStats {
-  long solves = 0, rows = 0, iterations = 0;
-  int maxIterations = 0;
+  long solves = 0, rows = 0;
 };
 
 // The coupled solve of one step's rods. Each stepped rod k (stepped[k])
 // has its system in work.system / work.rhs with its fixed DOFs applied and
 // its pair couplings in work.pairs; on return work.rhs holds each rod's
 // velocity increment. `firstIteration`: the rhs still lacks the couplings'
-// h^2 K v term (dynamics.cpp's first Newton iteration). A rod whose matrix
-// is not positive definite, or conjugate gradients that do not converge,
-// is a SolverFailure.
+// h^2 K v term (dynamics.cpp's first Newton iteration). A matrix that is
+// not positive definite is a SolverFailure.
 std::optional<Failure> solvePairsCoupled(const Model& model, std::vector<RodState>& rods, std::span<const char> stepped,
                                          double h, bool firstIteration, PairSolveScratch& scratch, PairSolveStats& stats);
 

@@ -1,8 +1,8 @@
 // Tests of the coupled pair-contact solve (src/physics/pair_coupling.cpp).
 // Reference: the whole system (every rod's band plus each contact's rank-one
 // terms q beta beta^T, the fixed DOFs eliminated) assembled densely here and
-// solved by Eigen's LDLT, which shares nothing with the Schur complement and
-// its conjugate gradients.
+// solved by Eigen's dense LDLT, which shares nothing with the solver's
+// sparse assembly, its fixed DOFs' elimination or its rows.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
