@@ -3,6 +3,7 @@
 
 #include "physics/assembly.h"
 #include "physics/integrator.h"
+#include "physics/pair_contact_set.h"
 #include "physics/pair_coupling.h"
 #include "physics/sleep.h"
 
@@ -15,10 +16,15 @@ void saveStart(RodState& r) {
   w.targets0 = r.targets;
 }
 
-void restoreStart(RodState& r) {
+// The poses and velocities of the step's start (its targets stay advanced).
+void restorePoses(RodState& r) {
   const RodWorkspace& w = r.work;
   r.x = w.x0, r.q = w.q0, r.v = w.v0, r.w = w.w0;
-  r.targets = w.targets0;
+}
+
+void restoreStart(RodState& r) {
+  restorePoses(r);
+  r.targets = r.work.targets0;
 }
 
 // Generalised velocity each constrained node must have to reach its target
@@ -166,6 +172,9 @@ bool couplesPairs(const Model& model, const State& state) {
   return false;
 }
 
+// Passes of the coupled step's contact set beyond its first solve.
+constexpr int kContactSetPasses = 4;
+
 // Every stepped rod in one solve, its pair contacts coupled.
 StepReport stepCoupled(const Model& model, State& state, double time, double h, long& iterations) {
   std::vector<char>& on = state.pairSolve.stepped;
@@ -179,12 +188,23 @@ StepReport stepCoupled(const Model& model, State& state, double time, double h, 
     r.work.pairsCoupled = true;
   }
   std::optional<Failure> failure;
-  for (int it = 0; it < model.newtonIterations && !failure; ++it) {
-    for (size_t k = 0; k < state.rods.size(); ++k)
-      if (on[k]) ++iterations, buildSystem(model, int(k), state.rods[k], time, h, it);
-    failure = solvePairsCoupled(model, state.rods, on, h, it == 0, state.pairSolve, state.stats.pairSolve);
-    for (size_t k = 0; k < state.rods.size() && !failure; ++k)
-      if (on[k]) applyIncrement(state.rods[k], h);
+  // The contact set is decided within the step: a pair (or wall node) the
+  // solve carried into touch from outside it joins the solve, one it let go
+  // of again leaves it, and the step is taken again from its start
+  // (physics/pair_contact_set.h).
+  clearEnteredContacts(state.rods);
+  for (int pass = 0; pass <= kContactSetPasses && !failure; ++pass) {
+    if (pass > 0)
+      for (size_t k = 0; k < state.rods.size(); ++k)
+        if (on[k]) restorePoses(state.rods[k]);
+    for (int it = 0; it < model.newtonIterations && !failure; ++it) {
+      for (size_t k = 0; k < state.rods.size(); ++k)
+        if (on[k]) ++iterations, buildSystem(model, int(k), state.rods[k], time, h, it);
+      failure = solvePairsCoupled(model, state.rods, on, h, it == 0, state.pairSolve, state.stats.pairSolve);
+      for (size_t k = 0; k < state.rods.size() && !failure; ++k)
+        if (on[k]) applyIncrement(state.rods[k], h);
+    }
+    if (failure || pass == kContactSetPasses || reviseContactSet(state.rods, on) == 0) break;
   }
   for (RodState& r : state.rods) r.work.pairsCoupled = false;
   if (failure) return {std::move(*failure)};

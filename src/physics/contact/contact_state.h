@@ -13,6 +13,10 @@ namespace coilsim {
 
 enum class ContactKind { Wall, Self, Rod };
 
+// How a contact that a step's solve carried into touch is held when the
+// step is taken again (ContactPoint::entered).
+enum class Entry : unsigned char { No, Affine, Held };
+
 // One contact of a segment (nodes a, a + 1) of this rod with a wall or another segment.
 struct ContactPoint {
   int segment = 0;            // node a = segment, node b = segment + 1
@@ -41,6 +45,18 @@ struct ContactPoint {
   // end-of-step check still counts it as outside the step's linearisation.
   // Mutable: set through the const contact lists the effects read.
   mutable bool pressed[2] = {false, false};
+  // Whether a solve of this step carried the pair (point contacts:
+  // entered[0]) or node a, b (line contacts) into touch from outside the
+  // solve, apart and not closing at the start (a step that solves its pair
+  // contacts coupled decides its contact set within the step,
+  // physics/pair_contact_set.h), and how the step taken again holds it.
+  // Affine: f = k pen, negative while still apart, for a contact that
+  // started within a hair of touch (the step's own solve has found that it
+  // closes, so it lands where it presses, and the force reported is the one
+  // that holds it). Held: a barrier at its start position, as a closing
+  // contact, for one that started further apart (k times a micrometre gap
+  // is tens of mN pulling across a linearisation that does not follow it).
+  Entry entered[2] = {Entry::No, Entry::No};
   // Line contacts held as constraints (ContactLaw::rigid): the multiplier,
   // the force the wall exerts on node a, b, N: from the last step's
   // matching contact at detection, then from each of the step's solves.

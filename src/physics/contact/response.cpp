@@ -33,9 +33,9 @@ NormalEval evalNormal(const ContactPoint& c, const RodState& rod, const ContactL
   NormalEval e;
   if (!c.line) {
     const double pen = c.radius - c.normal.dot(along(rod.x, c, c.s) - c.anchor);
-    if (pen <= 0 && !c.closing[0]) return e;
+    if (pen <= 0 && !c.closing[0] && c.entered[0] == Entry::No) return e;
     e.touching = true;
-    const double f = pen > 0 ? law.stiffness * pen : 0.0;
+    const double f = pen > 0 || c.entered[0] == Entry::Affine ? law.stiffness * pen : 0.0;
     e.fa = (1 - c.s) * f, e.fb = c.s * f;
     e.ka = (1 - c.s) * law.stiffness, e.kb = c.s * law.stiffness;
     return e;
@@ -50,8 +50,10 @@ NormalEval evalNormal(const ContactPoint& c, const RodState& rod, const ContactL
     return e;
   }
   const double pa = nodePenetration(c, rod.x, 0), pb = nodePenetration(c, rod.x, 1);
-  if (c.node != 1 && (pa > 0 || c.closing[0] || c.pressed[0])) e.fa = half * std::max(0.0, pa), e.ka = half;
-  if (c.node != 0 && (pb > 0 || c.closing[1] || c.pressed[1])) e.fb = half * std::max(0.0, pb), e.kb = half;
+  if (c.node != 1 && (pa > 0 || c.closing[0] || c.pressed[0] || c.entered[0] != Entry::No))
+    e.fa = half * (c.entered[0] == Entry::Affine ? pa : std::max(0.0, pa)), e.ka = half;
+  if (c.node != 0 && (pb > 0 || c.closing[1] || c.pressed[1] || c.entered[1] != Entry::No))
+    e.fb = half * (c.entered[1] == Entry::Affine ? pb : std::max(0.0, pb)), e.kb = half;
   e.touching = e.ka > 0 || e.kb > 0;
   return e;
 }
@@ -251,6 +253,26 @@ void addFriction(const ContactPoint& c, const NormalEval& n, const Mat3& nn, con
   out.damping[node[1]].topLeftCorner<3, 3>() += wb * d;
 }
 
+// Whether pair contact c of `contacts` (sorted by segment) repeats another
+// at a joint: a point at a node is the closest point of both segments that
+// meet there, so detection lists it twice (s = 1 on one segment, s = 0 on
+// the next; likewise on the other side). Solved coupled the two give
+// identical rows, which conjugate gradients cannot tell apart; the one at
+// the next segment's start is kept.
+bool jointDuplicate(std::span<const ContactPoint> contacts, const ContactPoint& c) {
+  const bool atEnd = c.s == 1.0, otherAtEnd = c.otherS == 1.0;
+  if (!atEnd && !otherAtEnd) return false;
+  const auto first = std::lower_bound(contacts.begin(), contacts.end(), c.segment,
+                                      [](const ContactPoint& p, int seg) { return p.segment < seg; });
+  for (auto it = first; it != contacts.end() && it->segment <= c.segment + 1; ++it) {
+    if (it->other != c.other) continue;
+    if (atEnd && it->segment == c.segment + 1 && it->s == 0.0 && it->otherSegment == c.otherSegment) return true;
+    if (otherAtEnd && it->segment == c.segment && it->otherSegment == c.otherSegment + 1 && it->otherS == 0.0)
+      return true;
+  }
+  return false;
+}
+
 // A pair contact (self or rod) whose two sides are solved together
 // (physics/pair_coupling.h): the same normal force as applyContacts gives,
 // and its coupling instead of the lumped diagonal. Friction stays lumped
@@ -316,7 +338,7 @@ void applyContacts(std::span<const ContactPoint> contacts, const EffectContext& 
     }
     if (!n.touching) continue;
     if (out.pairs && !c.line) {
-      applyCoupledPair(c, n, rod, law, h, out);
+      if (!jointDuplicate(contacts, c)) applyCoupledPair(c, n, rod, law, h, out);
       continue;
     }
     const int node[2] = {c.segment, c.segment + 1};

@@ -1,0 +1,33 @@
+#pragma once
+// The contact set of a step that solves its pair contacts coupled
+// (physics/pair_coupling.h), decided within the step.
+//
+// Detection lists every pair within reach; the step's solve holds those
+// touching at its start or closing at its start velocities. A coupled step
+// moves a packing in its rows' null space, which the lumped diagonal's
+// drag held still, and so carries nodes into neighbours left just apart:
+// a pair entering 2 um deep stores k pen^2 / 2 (1e5 pJ at 50 N/mm) that
+// no force paid for, and the next step gives it back as motion; the wall's
+// nodes likewise. So each pair (and wall node) the solve carried into touch
+// from outside it is marked entered (ContactPoint::entered) on both sides'
+// lists, and the step is taken again from its start with it in the solve
+// under the affine law, so that it lands where it presses.
+#include <span>
+#include <vector>
+
+namespace coilsim {
+
+struct RodState;
+
+// Clears the marks of an earlier solve (a retaken step's first substep
+// keeps the interval's lists).
+void clearEnteredContacts(std::vector<RodState>& rods);
+
+// Marks entered each pair of the stepped rods' self and rod contact lists
+// (and each wall contact's node) that was apart at the step's start
+// (work.x0) and not closing, and touches at the rods' current positions,
+// and unmarks each marked one that ends apart again (its affine force
+// pulled); returns how many marks changed.
+int reviseContactSet(std::vector<RodState>& rods, std::span<const char> stepped);
+
+}  // namespace coilsim
