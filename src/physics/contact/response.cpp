@@ -257,8 +257,9 @@ void addFriction(const ContactPoint& c, const NormalEval& n, const Mat3& nn, con
 // at a joint: a point at a node is the closest point of both segments that
 // meet there, so detection lists it twice (s = 1 on one segment, s = 0 on
 // the next; likewise on the other side). Solved coupled the two give
-// identical rows, which conjugate gradients cannot tell apart; the one at
-// the next segment's start is kept.
+// identical rows, the contact's force and stiffness twice over; the one at
+// the next segment's start is kept. (The lumped law counts it twice too;
+// changing that would move every shipped scene's result.)
 bool jointDuplicate(std::span<const ContactPoint> contacts, const ContactPoint& c) {
   const bool atEnd = c.s == 1.0, otherAtEnd = c.otherS == 1.0;
   if (!atEnd && !otherAtEnd) return false;
