@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "physics/contact/response.h"
 #include "physics/state.h"
 
 namespace coilsim {
@@ -77,10 +78,9 @@ int reviseContactSet(std::vector<RodState>& rods, std::span<const char> stepped)
     for (ContactPoint& c : rods[k].contact.wall) {
       for (int end = 0; end < 2; ++end) {
         if ((c.node >= 0 && c.node != end) || c.closing[end]) continue;
-        const size_t i = size_t(c.segment + end);
-        const double start = c.radius - c.normal.dot(rods[k].work.x0[i] - c.anchor);
+        const double start = nodePenetration(c, rods[k].work.x0, end);
         if (start > 0) continue;
-        const double now = c.radius - c.normal.dot(rods[k].x[i] - c.anchor);
+        const double now = nodePenetration(c, rods[k].x, end);
         const Entry law = revised(c.entered[end], start, now, c.radius);
         if (law == c.entered[end]) continue;
         c.entered[end] = law;

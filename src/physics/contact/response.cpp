@@ -22,12 +22,11 @@ double nodeMass(const ContactPoint& c, const RodState& rod, double wa, double wb
   return wa * rod.nodes[c.segment].mass + wb * rod.nodes[c.segment + 1].mass;
 }
 
-// Penetration of node a (end = 0) or b (end = 1) below the line contact's plane.
+}  // namespace
+
 double nodePenetration(const ContactPoint& c, const std::vector<Vec3>& x, int end) {
   return c.radius - c.normal.dot(x[c.segment + end] - c.anchor);
 }
-
-}  // namespace
 
 NormalEval evalNormal(const ContactPoint& c, const RodState& rod, const ContactLaw& law) {
   NormalEval e;

@@ -66,6 +66,7 @@
 //    coil rolling is not modelled.
 #include <algorithm>
 #include <span>
+#include <vector>
 
 #include "physics/contact/contact_state.h"
 #include "physics/effect.h"
@@ -102,6 +103,10 @@ struct NormalEval {
     return f > 0 ? std::max(0.0, fb) / f : (ka + kb > 0 ? kb / (ka + kb) : 0.5);
   }
 };
+
+// Penetration of node a (end = 0) or b (end = 1) of line contact c below
+// its plane, at positions x, m (< 0: apart).
+double nodePenetration(const ContactPoint& c, const std::vector<Vec3>& x, int end);
 
 // Normal penalty of contact c at the rod's current positions (a rigid line
 // contact: its multipliers, with the penalty's stiffness for friction).
