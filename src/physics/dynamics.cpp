@@ -198,6 +198,7 @@ StepReport stepCoupled(const Model& model, State& state, double time, double h, 
       for (size_t k = 0; k < state.rods.size(); ++k)
         if (on[k]) restorePoses(state.rods[k]);
     for (int it = 0; it < model.newtonIterations && !failure; ++it) {
+      followOtherSides(state.rods, on);
       for (size_t k = 0; k < state.rods.size(); ++k)
         if (on[k]) ++iterations, buildSystem(model, int(k), state.rods[k], time, h, it);
       failure = solvePairsCoupled(model, state.rods, on, h, it == 0, state.pairSolve, state.stats.pairSolve);

@@ -8,11 +8,14 @@
 namespace coilsim {
 namespace {
 
+// Point of segment `segment` of positions (or velocities) x at parameter s.
+Vec3 pointOf(const std::vector<Vec3>& x, int segment, double s) {
+  return (1 - s) * x[size_t(segment)] + s * x[size_t(segment) + 1];
+}
+
 // Penetration of pair contact c of rod k at positions xs (the other side's at xo).
 double pairPenetration(const ContactPoint& c, const std::vector<Vec3>& xs, const std::vector<Vec3>& xo) {
-  const Vec3 p = (1 - c.s) * xs[size_t(c.segment)] + c.s * xs[size_t(c.segment) + 1];
-  const Vec3 q = (1 - c.otherS) * xo[size_t(c.otherSegment)] + c.otherS * xo[size_t(c.otherSegment) + 1];
-  return c.radius - c.normal.dot(p - q);
+  return c.radius - c.normal.dot(pointOf(xs, c.segment, c.s) - pointOf(xo, c.otherSegment, c.otherS));
 }
 
 // A contact that entered from at most this fraction of its contact
@@ -43,6 +46,19 @@ ContactPoint* partner(std::vector<ContactPoint>& list, const ContactPoint& c, in
 }
 
 }  // namespace
+
+void followOtherSides(std::vector<RodState>& rods, std::span<const char> stepped) {
+  for (size_t k = 0; k < rods.size(); ++k) {
+    if (!stepped[k]) continue;
+    for (auto* list : {&rods[k].contact.self, &rods[k].contact.rod})
+      for (ContactPoint& c : *list) {
+        const RodState& o = rods[size_t(c.other)];
+        if (!stepped[size_t(c.other)]) continue;  // held where detection found it
+        c.anchor = pointOf(o.x, c.otherSegment, c.otherS);
+        c.otherVelocity = pointOf(o.v, c.otherSegment, c.otherS);
+      }
+  }
+}
 
 void clearEnteredContacts(std::vector<RodState>& rods) {
   for (RodState& r : rods)

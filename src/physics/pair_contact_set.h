@@ -30,4 +30,15 @@ void clearEnteredContacts(std::vector<RodState>& rods);
 // pulled); returns how many marks changed.
 int reviseContactSet(std::vector<RodState>& rods, std::span<const char> stepped);
 
+// Sets each pair contact's anchor and other-side velocity (ContactPoint::
+// anchor, otherVelocity) of the stepped rods to the other side's current
+// iterate. Detection leaves them at the other side's start, which is all a
+// lumped step (each side holding the other there) or a coupled step's first
+// Newton iterate needs; a later iterate of a coupled step has moved both
+// sides, and its force must be evaluated where both are, or the step's
+// Newton iterations do not converge to its implicit equations (the other
+// side's motion would count twice: once in the coupling rows, once more as
+// penetration of a still anchor).
+void followOtherSides(std::vector<RodState>& rods, std::span<const char> stepped);
+
 }  // namespace coilsim
