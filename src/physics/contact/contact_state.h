@@ -31,6 +31,7 @@ struct ContactPoint {
   double radius = 0;          // clearance the centre line keeps from `anchor` plane (r or r1 + r2)
   double gap = 0;             // clearance at detection, m (< 0: penetration)
   Vec3 otherVelocity = Vec3::Zero();  // velocity of the other surface point at detection
+  double otherMass = 0;        // pair contacts: the other side's mass at its point, kg (the coupled solve's damping)
   double normalForce = 0;     // penalty normal force at detection, N
   // Whether the start-of-step relative velocity carries the contact into
   // touch before the step ends (line contacts: per node a, b; point

@@ -362,6 +362,7 @@ void detectRodContacts(const Model& model, State& state, double h, bool sameRod,
     c.radius = touch;
     c.gap = gap;
     c.otherVelocity = vb;
+    c.otherMass = (1 - p.t) * rj.nodes[sj].mass + p.t * rj.nodes[sj + 1].mass;
     c.closing[0] = closing;
     ContactPoint d = c;
     d.segment = sj, d.other = ki, d.otherSegment = si;
@@ -369,6 +370,7 @@ void detectRodContacts(const Model& model, State& state, double h, bool sameRod,
     d.normal = -c.normal;
     d.anchor = p.p;
     d.otherVelocity = va;
+    d.otherMass = (1 - p.s) * ri.nodes[si].mass + p.s * ri.nodes[si + 1].mass;
     (sameRod ? state.rods[ki].contact.self : state.rods[ki].contact.rod).push_back(c);
     (sameRod ? state.rods[kj].contact.self : state.rods[kj].contact.rod).push_back(d);
   };

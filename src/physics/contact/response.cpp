@@ -279,7 +279,17 @@ bool jointDuplicate(std::span<const ContactPoint> contacts, const ContactPoint& 
 // (each side holding the other at its start).
 void applyCoupledPair(const ContactPoint& c, const NormalEval& n, const RodState& rod, const ContactLaw& law, double h,
                       RodForces& out) {
-  const double pointDamping = 2 * law.dampingRatio * std::sqrt(law.stiffness * nodeMass(c, rod, 1 - c.s, c.s));
+  // One damping coefficient for both sides, from the mean of their masses
+  // at the contact point (for equal masses the lumped law's 2 zeta
+  // sqrt(k m)), so that the damping forces are equal and opposite. With
+  // each side's own mass (the lumped law's) they differ where the masses do
+  // (a rod's end node has half the mass), and the difference is a net force
+  // on the pair that its coupling row does not resist: it moves both sides
+  // together against their mass alone, a 0.5 mg node by metres per second
+  // within a step. (The reduced mass, the relative motion's own critical
+  // damping, damps half as much and leaves a dense packing moving.)
+  const double mean = 0.5 * (nodeMass(c, rod, 1 - c.s, c.s) + c.otherMass);
+  const double pointDamping = 2 * law.dampingRatio * std::sqrt(law.stiffness * mean);
   const double approach = c.normal.dot(relativeVelocity(c, rod, c.s));
   const int node[2] = {c.segment, c.segment + 1};
   const double fe[2] = {n.fa, n.fb}, ke[2] = {n.ka, n.kb};
