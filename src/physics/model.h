@@ -91,9 +91,10 @@ struct ModelDef {
   double timeStep = 1e-3;            // s
   int newtonIterations = 1;          // per dynamic step (1 = linearly implicit Euler)
   // Self and rod contacts solved with both sides moving (physics/pair_coupling.h),
-  // an experiment that is off: with it a dense packing does not settle
-  // (docs/contact.md, "Pair contacts solved coupled"). Off: each side holds
-  // the other at its start (the lumped diagonal).
+  // off by default: on, plans and practice runs move (coils the lumped
+  // drag held in a sac can leave it; docs/contact.md, "The coupled solve
+  // switched on"). Off: each side holds the other at its start (the lumped
+  // diagonal).
   bool coupledPairs = false;
   HealthLimits health;
   std::vector<EffectUse> effects;    // gravity is one of them
