@@ -209,6 +209,7 @@ StepReport stepCoupled(const Model& model, State& state, double time, double h, 
   }
   for (RodState& r : state.rods) r.work.pairsCoupled = false;
   if (failure) return {std::move(*failure)};
+  reportSolvedPairForces(state.rods, on);
   return {};
 }
 

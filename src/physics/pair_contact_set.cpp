@@ -107,4 +107,23 @@ int reviseContactSet(std::vector<RodState>& rods, std::span<const char> stepped)
   return changed;
 }
 
+void reportSolvedPairForces(std::vector<RodState>& rods, std::span<const char> stepped) {
+  for (size_t k = 0; k < rods.size(); ++k) {
+    RodState& r = rods[k];
+    if (!stepped[k] || r.work.pairs.empty()) continue;
+    for (auto* force : {&r.contact.selfForce, &r.contact.rodForce})
+      if (!force->empty()) force->assign(r.x.size(), 0.0);
+    for (const PairCoupling& c : r.work.pairs) {
+      const RodState& o = rods[size_t(c.otherRod)];
+      const double pen = c.radius - c.normal.dot(pointOf(r.x, c.segment, c.s) - pointOf(o.x, c.otherSegment, c.otherS));
+      const double approach = c.normal.dot(pointOf(r.v, c.segment, c.s) - pointOf(o.v, c.otherSegment, c.otherS));
+      const double f = std::max(0.0, c.normalStiffness * (pen - c.springFrom) - c.normalDamping * approach);
+      std::vector<double>& out = c.otherRod == int(k) ? r.contact.selfForce : r.contact.rodForce;
+      if (out.size() < r.x.size()) out.assign(r.x.size(), 0.0);
+      out[size_t(c.segment)] += (1 - c.s) * f;
+      out[size_t(c.segment) + 1] += c.s * f;
+    }
+  }
+}
+
 }  // namespace coilsim

@@ -41,4 +41,14 @@ int reviseContactSet(std::vector<RodState>& rods, std::span<const char> stepped)
 // penetration of a still anchor).
 void followOtherSides(std::vector<RodState>& rods, std::span<const char> stepped);
 
+// Each stepped rod's coil-coil and self contact forces per node
+// (RodContacts::selfForce, rodForce) as the step's solve applied them, in
+// place of detection's penalty at the step's start: each coupling's normal
+// law k (pen - springFrom) - c (approach) at the step's end positions and
+// velocities, at least 0. The solve holds a closing or held contact by
+// its stiffness alone, with no penetration at detection, so the penalty
+// at the start says 0 for a coil pressed on a packing; this is the force
+// that stopped it (the step's momentum change, to the linearisation).
+void reportSolvedPairForces(std::vector<RodState>& rods, std::span<const char> stepped);
+
 }  // namespace coilsim

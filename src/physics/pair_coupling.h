@@ -47,6 +47,12 @@ struct PairCoupling {
   Vec3 normal = Vec3::UnitZ();
   double normalStiffness = 0, normalDamping = 0;    // N/m, N s/m
   double tangentStiffness = 0, tangentDamping = 0;  // N/m, N s/m
+  // Where the normal spring is measured from, for the force the solve
+  // applied (reportSolvedPairForces): the clearance r1 + r2, and the
+  // penetration at the iterate the rows were built at if its spring was off
+  // there (closing, held), whose force is then only what the stiffness
+  // added over the step; 0 if it was on.
+  double radius = 0, springFrom = 0;  // m
 };
 
 // Scratch of the coupled solve, sized by use and kept between steps.

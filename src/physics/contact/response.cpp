@@ -306,6 +306,9 @@ void applyCoupledPair(const ContactPoint& c, const NormalEval& n, const RodState
   p.s = c.s, p.otherS = c.otherS;
   p.normal = c.normal;
   p.normalStiffness = law.stiffness, p.normalDamping = pointDamping;
+  p.radius = c.radius;
+  const double pen = c.radius - c.normal.dot(along(rod.x, c, c.s) - c.anchor);
+  p.springFrom = pen > 0 || c.entered[0] == Entry::Affine ? 0.0 : pen;
   out.pairs->push_back(p);
   if (law.frictionStatic > 0 || law.frictionDynamic > 0) {
     out.touchedMatrix = true;
