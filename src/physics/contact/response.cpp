@@ -22,6 +22,11 @@ double nodeMass(const ContactPoint& c, const RodState& rod, double wa, double wb
   return wa * rod.nodes[c.segment].mass + wb * rod.nodes[c.segment + 1].mass;
 }
 
+// A point contact's penetration at the rod's current positions, against its anchor.
+double pointPenetration(const ContactPoint& c, const RodState& rod) {
+  return c.radius - c.normal.dot(along(rod.x, c, c.s) - c.anchor);
+}
+
 }  // namespace
 
 double nodePenetration(const ContactPoint& c, const std::vector<Vec3>& x, int end) {
@@ -31,7 +36,7 @@ double nodePenetration(const ContactPoint& c, const std::vector<Vec3>& x, int en
 NormalEval evalNormal(const ContactPoint& c, const RodState& rod, const ContactLaw& law) {
   NormalEval e;
   if (!c.line) {
-    const double pen = c.radius - c.normal.dot(along(rod.x, c, c.s) - c.anchor);
+    const double pen = pointPenetration(c, rod);
     if (pen <= 0 && !c.closing[0] && c.entered[0] == Entry::No) return e;
     e.touching = true;
     const double f = pen > 0 || c.entered[0] == Entry::Affine ? law.stiffness * pen : 0.0;
@@ -59,7 +64,7 @@ NormalEval evalNormal(const ContactPoint& c, const RodState& rod, const ContactL
 
 bool markClosing(ContactPoint& c, const RodState& rod, double h) {
   if (!c.line) {
-    const double pen = c.radius - c.normal.dot(along(rod.x, c, c.s) - c.anchor);
+    const double pen = pointPenetration(c, rod);
     c.closing[0] = pen - h * c.normal.dot(relativeVelocity(c, rod, c.s)) > 0;
     c.closing[1] = false;
     return pen > 0 || c.closing[0];
@@ -185,7 +190,7 @@ void applyStatic(std::span<const ContactPoint> contacts, const RodState& rod, co
       }
       continue;
     }
-    const Smoothed p = smoothed(c.radius - c.normal.dot(along(rod.x, c, c.s) - c.anchor), delta);
+    const Smoothed p = smoothed(pointPenetration(c, rod), delta);
     if (p.stiffness <= 0) continue;
     out.touchedMatrix = true;
     const int nodes[4] = {c.segment, c.segment + 1, c.otherSegment, c.otherSegment + 1};
@@ -307,7 +312,7 @@ void applyCoupledPair(const ContactPoint& c, const NormalEval& n, const RodState
   p.normal = c.normal;
   p.normalStiffness = law.stiffness, p.normalDamping = pointDamping;
   p.radius = c.radius;
-  const double pen = c.radius - c.normal.dot(along(rod.x, c, c.s) - c.anchor);
+  const double pen = pointPenetration(c, rod);
   p.springFrom = pen > 0 || c.entered[0] == Entry::Affine ? 0.0 : pen;
   out.pairs->push_back(p);
   if (law.frictionStatic > 0 || law.frictionDynamic > 0) {
