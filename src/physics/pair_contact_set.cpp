@@ -13,8 +13,10 @@ Vec3 pointOf(const std::vector<Vec3>& x, int segment, double s) {
   return (1 - s) * x[size_t(segment)] + s * x[size_t(segment) + 1];
 }
 
-// Penetration of pair contact c of rod k at positions xs (the other side's at xo).
-double pairPenetration(const ContactPoint& c, const std::vector<Vec3>& xs, const std::vector<Vec3>& xo) {
+// Penetration of pair contact c (a ContactPoint or its PairCoupling) at
+// positions xs (the other side's at xo).
+template <class Pair>
+double pairPenetration(const Pair& c, const std::vector<Vec3>& xs, const std::vector<Vec3>& xo) {
   return c.radius - c.normal.dot(pointOf(xs, c.segment, c.s) - pointOf(xo, c.otherSegment, c.otherS));
 }
 
@@ -111,15 +113,14 @@ void reportSolvedPairForces(std::vector<RodState>& rods, std::span<const char> s
   for (size_t k = 0; k < rods.size(); ++k) {
     RodState& r = rods[k];
     if (!stepped[k] || r.work.pairs.empty()) continue;
-    for (auto* force : {&r.contact.selfForce, &r.contact.rodForce})
-      if (!force->empty()) force->assign(r.x.size(), 0.0);
+    r.contact.selfForce.assign(r.x.size(), 0.0);
+    r.contact.rodForce.assign(r.x.size(), 0.0);
     for (const PairCoupling& c : r.work.pairs) {
       const RodState& o = rods[size_t(c.otherRod)];
-      const double pen = c.radius - c.normal.dot(pointOf(r.x, c.segment, c.s) - pointOf(o.x, c.otherSegment, c.otherS));
+      const double pen = pairPenetration(c, r.x, o.x);
       const double approach = c.normal.dot(pointOf(r.v, c.segment, c.s) - pointOf(o.v, c.otherSegment, c.otherS));
       const double f = std::max(0.0, c.normalStiffness * (pen - c.springFrom) - c.normalDamping * approach);
       std::vector<double>& out = c.otherRod == int(k) ? r.contact.selfForce : r.contact.rodForce;
-      if (out.size() < r.x.size()) out.assign(r.x.size(), 0.0);
       out[size_t(c.segment)] += (1 - c.s) * f;
       out[size_t(c.segment) + 1] += c.s * f;
     }
