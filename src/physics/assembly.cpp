@@ -79,8 +79,16 @@ double assemble(const Model& model, int rodIndex, RodState& rod, double time, do
   // Node constraints (wall contacts held as constraints) in a dynamic step only.
   w.unilateral.constraints.clear();
   w.pairs.clear();
-  RodForces out{w.force, w.effectK, w.effectD, w.effectsTouchedMatrix, coupling,
-                coupling ? nullptr : &w.unilateral.constraints, !coupling && w.pairsCoupled ? &w.pairs : nullptr};
+  w.wallSprings.clear();
+  const bool pairsCoupled = !coupling && w.pairsCoupled;
+  RodForces out{w.force,
+                w.effectK,
+                w.effectD,
+                w.effectsTouchedMatrix,
+                coupling,
+                coupling ? nullptr : &w.unilateral.constraints,
+                pairsCoupled ? &w.pairs : nullptr,
+                pairsCoupled ? &w.wallSprings : nullptr};
   const EffectContext ctx{model, rm, rod, time, loadFactor, h, coupling ? SolveKind::Static : SolveKind::Dynamic};
   for (const EffectUse& u : model.effects)
     if (u.enabled) u.effect->apply(ctx, u.values, out);

@@ -18,6 +18,7 @@
 #include "physics/math.h"
 #include "physics/node_friction.h"
 #include "physics/pair_coupling.h"
+#include "physics/wall_spring.h"
 #include "physics/param.h"
 
 namespace coilsim {
@@ -87,6 +88,9 @@ struct RodForces {
   // set in a dynamic step that couples them: a pair contact then writes its
   // coupling here instead of lumping its stiffness onto the diagonal.
   std::vector<PairCoupling>* pairs = nullptr;
+  // Wall nodes' normal springs in the same step (physics/wall_spring.h),
+  // for the wall force its solve applied.
+  std::vector<WallSpring>* wallSprings = nullptr;
 };
 
 // What the workbench knows of a bench setup when it asks an effect how to

@@ -32,10 +32,21 @@ constexpr double kAffineGap = 1e-3;
 // go. One that ends between stays (let go, it would enter again, and the
 // passes would alternate).
 Entry revised(Entry was, double start, double end, double radius) {
-  if (was == Entry::Held) return was;
+  if (was == Entry::Held || was == Entry::Released) return was;
   if (was == Entry::Affine) return end < start ? Entry::No : was;
   if (!(end > 0)) return Entry::No;
   return -start <= kAffineGap * radius ? Entry::Affine : Entry::Held;
+}
+
+// The normal force wall spring w applied to its node in the step's solve:
+// its force at the iterate it was built at, carried to the rod's current
+// positions and velocities by the stiffness and damping the matrix held
+// (< 0: it pulled).
+double solvedForce(const WallSpring& w, const RodState& r) {
+  const size_t i = size_t(w.node);
+  const double pen = w.radius - w.normal.dot(r.x[i] - w.anchor);
+  const double approach = w.normal.dot(r.v[i] - w.otherVelocity);
+  return w.force + w.stiffness * (pen - w.penetration) - w.damping * (approach - w.approach);
 }
 
 // The other side's contact of pair c (rod k's), in its sorted list.
@@ -92,10 +103,27 @@ int reviseContactSet(std::vector<RodState>& rods, std::span<const char> stepped)
         ++changed;
       }
     }
+    // A wall node the solve held but pulled onto the wall is let go.
+    std::vector<ContactPoint>& wall = rods[k].contact.wall;
+    for (const WallSpring& w : rods[k].work.wallSprings) {
+      if (size_t(w.contact) >= wall.size() || !(solvedForce(w, rods[k]) < 0)) continue;
+      wall[size_t(w.contact)].entered[w.end] = Entry::Released;
+      ++changed;
+    }
     // The wall's nodes likewise (each against its own plane).
-    for (ContactPoint& c : rods[k].contact.wall) {
+    for (ContactPoint& c : wall) {
       for (int end = 0; end < 2; ++end) {
-        if ((c.node >= 0 && c.node != end) || c.closing[end]) continue;
+        if (c.node >= 0 && c.node != end) continue;
+        if (c.entered[end] == Entry::Released) {
+          // Let go, it went deeper into the wall than it started: back in.
+          const double start = nodePenetration(c, rods[k].work.x0, end);
+          if (nodePenetration(c, rods[k].x, end) > std::max(start, 0.0)) {
+            c.entered[end] = start > 0 || c.closing[end] ? Entry::No : Entry::Held;
+            ++changed;
+          }
+          continue;
+        }
+        if (c.closing[end]) continue;
         const double start = nodePenetration(c, rods[k].work.x0, end);
         if (start > 0) continue;
         const double now = nodePenetration(c, rods[k].x, end);
@@ -124,6 +152,15 @@ void reportSolvedPairForces(std::vector<RodState>& rods, std::span<const char> s
       out[size_t(c.segment)] += (1 - c.s) * f;
       out[size_t(c.segment) + 1] += c.s * f;
     }
+  }
+}
+
+void reportSolvedWallForces(std::vector<RodState>& rods, std::span<const char> stepped) {
+  for (size_t k = 0; k < rods.size(); ++k) {
+    RodState& r = rods[k];
+    if (!stepped[k]) continue;
+    r.contact.wallForce.assign(r.x.size(), 0.0);
+    for (const WallSpring& w : r.work.wallSprings) r.contact.wallForce[size_t(w.node)] += std::max(0.0, solvedForce(w, r));
   }
 }
 

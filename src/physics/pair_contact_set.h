@@ -27,7 +27,10 @@ void clearEnteredContacts(std::vector<RodState>& rods);
 // (and each wall contact's node) that was apart at the step's start
 // (work.x0) and not closing, and touches at the rods' current positions,
 // and unmarks each marked one that ends apart again (its affine force
-// pulled); returns how many marks changed.
+// pulled); marks released each wall node whose spring the solve held
+// (physics/wall_spring.h) but whose solved force pulled it onto the wall
+// (a closing node that the solve turned away, held by its stiffness as if
+// glued); returns how many marks changed.
 int reviseContactSet(std::vector<RodState>& rods, std::span<const char> stepped);
 
 // Sets each pair contact's anchor and other-side velocity (ContactPoint::
@@ -50,5 +53,14 @@ void followOtherSides(std::vector<RodState>& rods, std::span<const char> stepped
 // at the start says 0 for a coil pressed on a packing; this is the force
 // that stopped it (the step's momentum change, to the linearisation).
 void reportSolvedPairForces(std::vector<RodState>& rods, std::span<const char> stepped);
+
+// Each stepped rod's wall force per node (RodContacts::wallForce) as the
+// same step's solve applied it: each wall node's spring of the last Newton
+// iterate (physics/wall_spring.h), its force there carried to the step's
+// end positions and velocities by the stiffness and damping the solve's
+// matrix held, at least 0. Detection's penalty at the step's start says 0
+// for a node the solve holds by its stiffness alone (closing, held), which
+// in a packing at rest is a third of what its wall carries.
+void reportSolvedWallForces(std::vector<RodState>& rods, std::span<const char> stepped);
 
 }  // namespace coilsim

@@ -12,6 +12,7 @@
 #include "physics/model.h"
 #include "physics/math.h"
 #include "physics/unilateral.h"
+#include "physics/wall_spring.h"
 
 namespace coilsim {
 
@@ -43,6 +44,7 @@ struct RodWorkspace {
   // this assembly asks the effects for their couplings, and what they gave.
   bool pairsCoupled = false;
   std::vector<PairCoupling> pairs;
+  std::vector<WallSpring> wallSprings;  // the wall nodes' springs of the same assembly
 };
 
 struct RodState {

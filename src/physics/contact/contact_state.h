@@ -14,8 +14,9 @@ namespace coilsim {
 enum class ContactKind { Wall, Self, Rod };
 
 // How a contact that a step's solve carried into touch is held when the
-// step is taken again (ContactPoint::entered).
-enum class Entry : unsigned char { No, Affine, Held };
+// step is taken again (ContactPoint::entered); Released: one the step's
+// solve held and found pulling, which the step taken again leaves out.
+enum class Entry : unsigned char { No, Affine, Held, Released };
 
 // One contact of a segment (nodes a, a + 1) of this rod with a wall or another segment.
 struct ContactPoint {
@@ -57,6 +58,9 @@ struct ContactPoint {
   // that holds it). Held: a barrier at its start position, as a closing
   // contact, for one that started further apart (k times a micrometre gap
   // is tens of mN pulling across a linearisation that does not follow it).
+  // Released (wall nodes): in the solve (pressing, closing or held) but
+  // its solved force pulled the node onto the wall; a wall only pushes, so
+  // the step taken again leaves the node out of the solve.
   Entry entered[2] = {Entry::No, Entry::No};
   // Line contacts held as constraints (ContactLaw::rigid): the multiplier,
   // the force the wall exerts on node a, b, N: from the last step's

@@ -363,7 +363,9 @@ std::optional<Failure> checkWallContacts(const Model& model, const State& state,
         for (int j = 0; j < 2; ++j) {
           if (c->node >= 0 && c->node != j) continue;
           const double start = c->radius - c->normal.dot(r.work.x0[e + j] - c->anchor);
-          const bool inSolve = heldOnly ? c->multiplier[j] > 0 : start > 0 || c->closing[j] || c->entered[j] != Entry::No;
+          const bool inSolve = heldOnly ? c->multiplier[j] > 0
+                                        : c->entered[j] != Entry::Released &&
+                                              (start > 0 || c->closing[j] || c->entered[j] != Entry::No);
           if (inSolve)
             known[j] = std::max(known[j], c->radius - c->normal.dot(r.x[e + j] - c->anchor));
           else

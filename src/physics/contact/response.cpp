@@ -37,7 +37,7 @@ NormalEval evalNormal(const ContactPoint& c, const RodState& rod, const ContactL
   NormalEval e;
   if (!c.line) {
     const double pen = pointPenetration(c, rod);
-    if (pen <= 0 && !c.closing[0] && c.entered[0] == Entry::No) return e;
+    if (c.entered[0] == Entry::Released || (pen <= 0 && !c.closing[0] && c.entered[0] == Entry::No)) return e;
     e.touching = true;
     const double f = pen > 0 || c.entered[0] == Entry::Affine ? law.stiffness * pen : 0.0;
     e.fa = (1 - c.s) * f, e.fb = c.s * f;
@@ -54,9 +54,9 @@ NormalEval evalNormal(const ContactPoint& c, const RodState& rod, const ContactL
     return e;
   }
   const double pa = nodePenetration(c, rod.x, 0), pb = nodePenetration(c, rod.x, 1);
-  if (c.node != 1 && (pa > 0 || c.closing[0] || c.pressed[0] || c.entered[0] != Entry::No))
+  if (c.node != 1 && c.entered[0] != Entry::Released && (pa > 0 || c.closing[0] || c.pressed[0] || c.entered[0] != Entry::No))
     e.fa = half * (c.entered[0] == Entry::Affine ? pa : std::max(0.0, pa)), e.ka = half;
-  if (c.node != 0 && (pb > 0 || c.closing[1] || c.pressed[1] || c.entered[1] != Entry::No))
+  if (c.node != 0 && c.entered[1] != Entry::Released && (pb > 0 || c.closing[1] || c.pressed[1] || c.entered[1] != Entry::No))
     e.fb = half * (c.entered[1] == Entry::Affine ? pb : std::max(0.0, pb)), e.kb = half;
   e.touching = e.ka > 0 || e.kb > 0;
   return e;
@@ -387,6 +387,10 @@ void applyContacts(std::span<const ContactPoint> contacts, const EffectContext& 
       out.force[i].head<3>() += fn * c.normal;
       out.stiffness[i].topLeftCorner<3, 3>() += law.implicitScale * ke[end] * nn;
       out.damping[i].topLeftCorner<3, 3>() += law.implicitScale * damping * nn;
+      if (c.line && out.wallSprings)
+        out.wallSprings->push_back({i, int(&c - contacts.data()), end, c.normal, c.anchor, c.otherVelocity, c.radius,
+                                    nodePenetration(c, rod.x, end), approach, fn, law.implicitScale * ke[end],
+                                    law.implicitScale * damping});
     }
     out.touchedMatrix = true;
     if (law.frictionStatic > 0 || law.frictionDynamic > 0) addFriction(c, n, nn, rod, law, h, out);
