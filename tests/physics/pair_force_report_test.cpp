@@ -25,13 +25,7 @@ namespace {
 constexpr double kWire = 0.127e-3, kSpan = 12e-3;
 
 RodDef wire(const char* name, const Vec3& start, const Vec3& along, double length, int beams) {
-  RodDef r = test::rodWithRest(makeStraight(length, beams), length, beams, test::platinum(),
-                               circularSection(kWire, test::kPlatinumPoisson));
-  r.name = name;
-  r.placement.position = start;
-  r.placement.direction = along;
-  r.placement.normal = Vec3::UnitZ().cross(along).normalized();
-  return r;
+  return test::platinumWire(name, start, along, length, beams, kWire);
 }
 
 struct Rest {

@@ -30,13 +30,7 @@ namespace {
 constexpr double kWire = 0.127e-3;  // wire radius, m
 
 RodDef wire(const char* name, const Vec3& start, const Vec3& along, double length, int beams) {
-  RodDef r = test::rodWithRest(makeStraight(length, beams), length, beams, test::platinum(),
-                               circularSection(kWire, test::kPlatinumPoisson));
-  r.name = name;
-  r.placement.position = start;
-  r.placement.direction = along;
-  r.placement.normal = Vec3::UnitZ().cross(along).normalized();
-  return r;
+  return test::platinumWire(name, start, along, length, beams, kWire);
 }
 
 // The stack with the lower wires `above` their touching height over the
@@ -110,11 +104,7 @@ TEST(WallForceReport, AStackAtRestOnTheFloorReportsItsWeight) {
     def.damping.massCoeff = 20;
     const Model model = compileModel(def);
     State s = makeState(model);
-    for (int k = 0; k < 1500; ++k) {
-      const StepReport r = step(model, s);
-      EXPECT_TRUE(r.ok()) << "step " << k;
-      if (!r.ok()) break;
-    }
+    ASSERT_TRUE(test::run(model, s, 1500)) << "a step was refused";
     double weight = 0, fastest = 0;
     for (const RodState& r : s.rods)
       for (int i = 0; i < r.activeNodes; ++i) {

@@ -54,6 +54,19 @@ inline RodDef straightRod(double length, int beams, const Material& m, const Sec
   return rodWithRest(makeStraight(length, beams), length, beams, m, s);
 }
 
+// A straight platinum wire of `radius` named `name` from `start` along the
+// unit `along`, d1 horizontal (z x along): the wires the contact-force
+// tests lay on one another.
+inline RodDef platinumWire(const char* name, const Vec3& start, const Vec3& along, double length, int beams,
+                           double radius) {
+  RodDef r = rodWithRest(makeStraight(length, beams), length, beams, platinum(), circularSection(radius, kPlatinumPoisson));
+  r.name = name;
+  r.placement.position = start;
+  r.placement.direction = along;
+  r.placement.normal = Vec3::UnitZ().cross(along).normalized();
+  return r;
+}
+
 // Clamps node 0 (all six DOFs) at its rest pose.
 inline RodDef clamped(RodDef r) {
   r.constraints.push_back({0, kAllDofs});
