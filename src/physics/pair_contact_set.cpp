@@ -49,6 +49,25 @@ double solvedForce(const WallSpring& w, const RodState& r) {
   return w.force + w.stiffness * (pen - w.penetration) - w.damping * (approach - w.approach);
 }
 
+// The normal force pair coupling c of rod k applied in the step's solve, at
+// the rods' current positions and velocities (< 0: it pulled).
+double solvedForce(const PairCoupling& c, const std::vector<RodState>& rods, size_t k) {
+  const RodState &r = rods[k], &o = rods[size_t(c.otherRod)];
+  const double pen = pairPenetration(c, r.x, o.x);
+  const double approach = c.normal.dot(pointOf(r.v, c.segment, c.s) - pointOf(o.v, c.otherSegment, c.otherS));
+  return c.normalStiffness * (pen - c.springFrom) - c.normalDamping * approach;
+}
+
+// The contact of rod k's list that pair coupling c was built from.
+ContactPoint* contactOf(std::vector<ContactPoint>& list, const PairCoupling& c) {
+  auto it = std::lower_bound(list.begin(), list.end(), c.segment,
+                             [](const ContactPoint& p, int seg) { return p.segment < seg; });
+  for (; it != list.end() && it->segment == c.segment; ++it)
+    if (it->other == c.otherRod && it->otherSegment == c.otherSegment && it->s == c.s && it->otherS == c.otherS)
+      return &*it;
+  return nullptr;
+}
+
 // The other side's contact of pair c (rod k's), in its sorted list.
 ContactPoint* partner(std::vector<ContactPoint>& list, const ContactPoint& c, int k) {
   auto it = std::lower_bound(list.begin(), list.end(), c.otherSegment,
@@ -81,6 +100,21 @@ void clearEnteredContacts(std::vector<RodState>& rods) {
 
 int reviseContactSet(std::vector<RodState>& rods, std::span<const char> stepped) {
   int changed = 0;
+  // A pair the solve held but whose solved force pulled its sides together
+  // is let go, on both sides' lists, as the wall's nodes below.
+  for (size_t k = 0; k < rods.size(); ++k) {
+    if (!stepped[k]) continue;
+    for (const PairCoupling& p : rods[k].work.pairs) {
+      if (!(solvedForce(p, rods, k) < 0)) continue;
+      const bool self = p.otherRod == int(k);
+      ContactPoint* c = contactOf(self ? rods[k].contact.self : rods[k].contact.rod, p);
+      if (!c || c->entered[0] == Entry::Released) continue;
+      c->entered[0] = Entry::Released;
+      std::vector<ContactPoint>& other = self ? rods[k].contact.self : rods[size_t(p.otherRod)].contact.rod;
+      if (ContactPoint* d = partner(other, *c, int(k))) d->entered[0] = Entry::Released;
+      ++changed;
+    }
+  }
   for (size_t k = 0; k < rods.size(); ++k) {
     if (!stepped[k]) continue;
     for (const bool self : {true, false}) {
@@ -89,16 +123,25 @@ int reviseContactSet(std::vector<RodState>& rods, std::span<const char> stepped)
         const size_t j = size_t(c.other);
         // Each pair once: from its lower rod, or its lower segment.
         if (stepped[j] && (j == k ? c.otherSegment < c.segment : j < k)) continue;
-        if (c.closing[0]) continue;
         const RodState& o = rods[j];
         const std::vector<Vec3>& otherStart = stepped[j] ? o.work.x0 : o.x;
         const double start = pairPenetration(c, rods[k].work.x0, otherStart);
-        if (start > 0) continue;  // in the solve already
         const double end = pairPenetration(c, rods[k].x, o.x);
+        std::vector<ContactPoint>& other = self ? rods[j].contact.self : rods[j].contact.rod;
+        if (c.entered[0] == Entry::Released) {
+          // Let go, it went deeper than it started: back in.
+          if (end > std::max(start, 0.0)) {
+            c.entered[0] = start > 0 || c.closing[0] ? Entry::No : Entry::Held;
+            if (ContactPoint* d = partner(other, c, int(k))) d->entered[0] = c.entered[0];
+            ++changed;
+          }
+          continue;
+        }
+        if (c.closing[0]) continue;
+        if (start > 0) continue;  // in the solve already
         const Entry now = revised(c.entered[0], start, end, c.radius);
         if (now == c.entered[0]) continue;
         c.entered[0] = now;
-        std::vector<ContactPoint>& other = self ? rods[j].contact.self : rods[j].contact.rod;
         if (ContactPoint* d = partner(other, c, int(k))) d->entered[0] = now;
         ++changed;
       }

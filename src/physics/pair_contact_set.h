@@ -27,10 +27,12 @@ void clearEnteredContacts(std::vector<RodState>& rods);
 // (and each wall contact's node) that was apart at the step's start
 // (work.x0) and not closing, and touches at the rods' current positions,
 // and unmarks each marked one that ends apart again (its affine force
-// pulled); marks released each wall node whose spring the solve held
-// (physics/wall_spring.h) but whose solved force pulled it onto the wall
-// (a closing node that the solve turned away, held by its stiffness as if
-// glued); returns how many marks changed.
+// pulled); marks released each pair, on both sides' lists, and each wall
+// node whose spring the solve held (PairCoupling, physics/wall_spring.h)
+// but whose solved force pulled its sides together (a closing contact
+// that the solve turned away, held by its stiffness as if glued), and
+// takes back in one let go that ended deeper than it started; returns how
+// many marks changed.
 int reviseContactSet(std::vector<RodState>& rods, std::span<const char> stepped);
 
 // Sets each pair contact's anchor and other-side velocity (ContactPoint::

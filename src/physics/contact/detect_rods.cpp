@@ -454,7 +454,8 @@ std::optional<Failure> checkRodContacts(const Model& model, const State& state, 
     const double depth = touch - closestSegmentSegment(a0, a1, b0, b1).distance;
     if (depth <= kMissedContact * touch || depth <= deepest) return;
     const ContactPoint* c = listed(state, sameRod, ki, si, kj, sj);
-    if (c && (c->gap < 0 || c->closing[0] || c->entered[0] != Entry::No)) return;  // in the step's implicit solve: the penalty's business
+    // In the step's implicit solve: the penalty's business (one the solve let go of is not).
+    if (c && c->entered[0] != Entry::Released && (c->gap < 0 || c->closing[0] || c->entered[0] != Entry::No)) return;
     deepest = depth;
     missed = badRod(model.rods[ki].name, "went " + std::to_string(int(std::lround(depth * 1e6))) + " um into rod '" +
                                              model.rods[kj].name + "' beam " + std::to_string(sj) +

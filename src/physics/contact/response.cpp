@@ -37,7 +37,7 @@ NormalEval evalNormal(const ContactPoint& c, const RodState& rod, const ContactL
   NormalEval e;
   if (!c.line) {
     const double pen = pointPenetration(c, rod);
-    if (pen <= 0 && !c.closing[0] && c.entered[0] == Entry::No) return e;
+    if (c.entered[0] == Entry::Released || (pen <= 0 && !c.closing[0] && c.entered[0] == Entry::No)) return e;
     e.touching = true;
     const double f = pen > 0 || c.entered[0] == Entry::Affine ? law.stiffness * pen : 0.0;
     e.fa = (1 - c.s) * f, e.fb = c.s * f;
