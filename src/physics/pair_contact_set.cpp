@@ -32,7 +32,7 @@ constexpr double kAffineGap = 1e-3;
 // go. One that ends between stays (let go, it would enter again, and the
 // passes would alternate).
 Entry revised(Entry was, double start, double end, double radius) {
-  if (was == Entry::Held || was == Entry::Released) return was;
+  if (was == Entry::Held) return was;
   if (was == Entry::Affine) return end < start ? Entry::No : was;
   if (!(end > 0)) return Entry::No;
   return -start <= kAffineGap * radius ? Entry::Affine : Entry::Held;
@@ -187,10 +187,7 @@ void reportSolvedPairForces(std::vector<RodState>& rods, std::span<const char> s
     r.contact.selfForce.assign(r.x.size(), 0.0);
     r.contact.rodForce.assign(r.x.size(), 0.0);
     for (const PairCoupling& c : r.work.pairs) {
-      const RodState& o = rods[size_t(c.otherRod)];
-      const double pen = pairPenetration(c, r.x, o.x);
-      const double approach = c.normal.dot(pointOf(r.v, c.segment, c.s) - pointOf(o.v, c.otherSegment, c.otherS));
-      const double f = std::max(0.0, c.normalStiffness * (pen - c.springFrom) - c.normalDamping * approach);
+      const double f = std::max(0.0, solvedForce(c, rods, k));
       std::vector<double>& out = c.otherRod == int(k) ? r.contact.selfForce : r.contact.rodForce;
       out[size_t(c.segment)] += (1 - c.s) * f;
       out[size_t(c.segment) + 1] += c.s * f;

@@ -20,10 +20,15 @@ namespace {
 // before its handlers are installed or before its first step. The progress
 // line is drawn only after a step, half a second into stepping
 // (app/progress.cpp). timeout(1) ends a run that ignores the signal and the
-// wait is bounded, so the test cannot hang; timeout passes the signal on.
+// wait is bounded, so the test cannot hang; timeout passes the signal on,
+// once with --foreground: without it timeout sends it to the child and
+// again to its process group, and the second, if the first was handled
+// already, takes the default action (the handler is SA_RESETHAND, so that
+// a second Ctrl-C ends a stuck run): the run died by the signal with no
+// result written, now and then on a loaded machine.
 Exec interrupted(const std::vector<std::string>& args, int signal, const fs::path& dir) {
   std::string cmd = "echo $$ >" + quote((dir / "pid.txt").string()) +
-                    "; exec env -u DISPLAY -u WAYLAND_DISPLAY timeout 600 " + quote(COILSIM_BINARY);
+                    "; exec env -u DISPLAY -u WAYLAND_DISPLAY timeout --foreground 600 " + quote(COILSIM_BINARY);
   for (const std::string& a : args) cmd.append(" ").append(quote(a));
   cmd += " >" + quote((dir / "stdout.txt").string());
   const std::string tty = quote((dir / "tty.txt").string());
