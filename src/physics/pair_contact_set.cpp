@@ -126,11 +126,10 @@ int reviseContactSet(std::vector<RodState>& rods, std::span<const char> stepped)
         const RodState& o = rods[j];
         const std::vector<Vec3>& otherStart = stepped[j] ? o.work.x0 : o.x;
         const double start = pairPenetration(c, rods[k].work.x0, otherStart);
-        const double end = pairPenetration(c, rods[k].x, o.x);
         std::vector<ContactPoint>& other = self ? rods[j].contact.self : rods[j].contact.rod;
         if (c.entered[0] == Entry::Released) {
           // Let go, it went deeper than it started: back in.
-          if (end > std::max(start, 0.0)) {
+          if (pairPenetration(c, rods[k].x, o.x) > std::max(start, 0.0)) {
             c.entered[0] = start > 0 || c.closing[0] ? Entry::No : Entry::Held;
             if (ContactPoint* d = partner(other, c, int(k))) d->entered[0] = c.entered[0];
             ++changed;
@@ -139,7 +138,7 @@ int reviseContactSet(std::vector<RodState>& rods, std::span<const char> stepped)
         }
         if (c.closing[0]) continue;
         if (start > 0) continue;  // in the solve already
-        const Entry now = revised(c.entered[0], start, end, c.radius);
+        const Entry now = revised(c.entered[0], start, pairPenetration(c, rods[k].x, o.x), c.radius);
         if (now == c.entered[0]) continue;
         c.entered[0] = now;
         if (ContactPoint* d = partner(other, c, int(k))) d->entered[0] = now;
