@@ -106,6 +106,43 @@ SleepingCase benchSleeping(int asleepMm, int steps) {
   return c;
 }
 
+// The packing, settled `settle` steps under the coupled solve from the laid
+// state (the shells closed onto one another: most segments then press
+// another, as in a packed sac), stepped `steps` steps from that one State
+// with the pair contacts lumped (the default) and solved coupled
+// (Model::coupledPairs, physics/pair_coupling.h): thread CPU time per step
+// of each, and the coupled step's solves per step (its contact set is
+// decided within the step, physics/pair_contact_set.h) and rows per solve.
+struct CoupledCase {
+  double lumpedUs = 0, coupledUs = 0, solvesPerStep = 0, rowsPerSolve = 0;
+  bool ok = true;
+};
+
+CoupledCase benchCoupled(int mm, int settle, int steps) {
+  CoupledCase c;
+  ModelDef def = planning::denseSacModel(units::mmToM(mm));
+  const Model lumped = compileModel(def);
+  def.coupledPairs = true;
+  const Model coupled = compileModel(def);
+  State start = makeState(coupled);
+  for (int i = 0; i < settle; ++i) c.ok = step(coupled, start).ok() && c.ok;
+  start.stats.pairSolve = {};
+  State a = start, b = start;
+  for (int i = 0; i < steps; ++i) {
+    double t0 = cpuMicroseconds();
+    c.ok = step(lumped, a).ok() && c.ok;
+    c.lumpedUs += cpuMicroseconds() - t0;
+    t0 = cpuMicroseconds();
+    c.ok = step(coupled, b).ok() && c.ok;
+    c.coupledUs += cpuMicroseconds() - t0;
+  }
+  c.lumpedUs /= steps, c.coupledUs /= steps;
+  const PairSolveStats& p = b.stats.pairSolve;
+  c.solvesPerStep = double(p.solves) / steps;
+  c.rowsPerSolve = p.solves ? double(p.rows) / double(p.solves) : 0.0;
+  return c;
+}
+
 }  // namespace
 
 void benchDenseFigures(const std::function<void(const std::string&, double)>& set, bool quick, bool json) {
@@ -170,6 +207,27 @@ void benchDenseFigures(const std::function<void(const std::string&, double)>& se
                   stepUs / steps, detectUs / steps, freshUs / steps, wall1Us / steps, wall2Us / steps,
                   double(contacts) / steps / segments, stepUs / steps / segments,
                   ok ? "" : "  (a step was refused)");
+  }
+  // Pair contacts solved coupled: what the solve that lets a packing come
+  // to rest costs against the lumped one.
+  const std::vector<int> coupledLengths = quick ? std::vector<int>{100} : std::vector<int>{100, 250};
+  const int settle = quick ? 100 : 300;
+  if (!json)
+    std::printf("dense packing with the pair contacts solved coupled (physics/pair_coupling.h) against lumped (the "
+                "default), from one State settled %d steps under the coupled solve, thread CPU time per step:\n"
+                "  %8s %10s %11s %8s %15s %14s\n",
+                settle, "coil_mm", "lumped_us", "coupled_us", "ratio", "solves/step", "rows/solve");
+  for (int mm : coupledLengths) {
+    const CoupledCase c = benchCoupled(mm, settle, quick ? 10 : 40);
+    const std::string k = "_" + std::to_string(mm) + "mm";
+    set("dense_lumped_step_us" + k, c.lumpedUs);
+    set("dense_coupled_step_us" + k, c.coupledUs);
+    set("dense_coupled_solves_per_step" + k, c.solvesPerStep);
+    set("dense_coupled_run_ok" + k, c.ok ? 1.0 : 0.0);
+    if (!json)
+      std::printf("  %8d %10.0f %11.0f %8.2f %15.2f %14.1f%s\n", mm, c.lumpedUs, c.coupledUs,
+                  c.lumpedUs > 0 ? c.coupledUs / c.lumpedUs : 0.0, c.solvesPerStep, c.rowsPerSolve,
+                  c.ok ? "" : "  (a step was refused)");
   }
   // Sleeping coils: what a coil at rest costs once it sleeps.
   const std::vector<int> asleepLengths = quick ? std::vector<int>{250} : std::vector<int>{250, 500, 1000};

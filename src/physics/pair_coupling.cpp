@@ -1,11 +1,43 @@
 #include "physics/pair_coupling.h"
 
+#include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
 #include <cmath>
 
 #include "physics/state.h"
 
 namespace coilsim {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+// The matrix is assembled in elimination order (PairSolveScratch::slot),
+// its upper triangle, so the factorisation takes it as it is.
+struct PairFactorCache::Impl {
+  std::vector<Eigen::Triplet<double>> triplets;
+  SparseMatrix matrix;
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>> factor;
+  std::vector<int> outer, inner;  // the pattern the factor's symbolic analysis was made for
+  bool analysed = false;
+  SparseMatrix graph;  // the nodes' graph, for their ordering
+  std::vector<Eigen::Triplet<double>> links;
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;
+  Eigen::VectorXd rhs, dv;
+};
+
+PairFactorCache::PairFactorCache() = default;
+PairFactorCache::~PairFactorCache() = default;
+PairFactorCache::PairFactorCache(const PairFactorCache&) {}
+PairFactorCache& PairFactorCache::operator=(const PairFactorCache& other) {
+  if (this != &other) impl_.reset();
+  return *this;
+}
+PairFactorCache::PairFactorCache(PairFactorCache&&) noexcept = default;
+PairFactorCache& PairFactorCache::operator=(PairFactorCache&&) noexcept = default;
+PairFactorCache::Impl& PairFactorCache::impl() {
+  if (!impl_) impl_ = std::make_unique<Impl>();
+  return *impl_;
+}
+
 namespace {
 
 
@@ -86,19 +118,83 @@ Failure solverFailure(const Model& model, int rod, std::string text) {
 
 using Triplet = Eigen::Triplet<double>;
 
-// The lower triangle of rod k's band, its unknowns from `first` on.
-void addBand(const RodState& r, int first, std::vector<Triplet>& out) {
+// Each node of the touched rods gets two places in the elimination order,
+// one for its three translations and one for its three rotations
+// (s.slot, indexed by 2 (s.firstNode[rod] + node) + part): a minimum-degree
+// ordering of the graph of those parts, whose links are the bands'
+// neighbours and every pair of nodes' translations that one row couples.
+// The parts are kept apart because only translations take rows: with each
+// node's six unknowns ordered together, the rotations were eliminated with
+// the translations and filled in as densely (twice the factorisation's
+// time in a packed sac). Returns the number of nodes.
+int orderNodes(const std::vector<RodState>& rods, PairSolveScratch& s, PairFactorCache::Impl& c) {
+  s.firstNode.assign(rods.size(), -1);
+  int nodes = 0;
+  for (size_t k = 0; k < rods.size(); ++k)
+    if (s.touched[k]) s.firstNode[k] = nodes, nodes += rods[k].activeNodes;
+  c.links.clear();
+  const auto link = [&](int a, int b) {
+    if (a != b) c.links.emplace_back(std::max(a, b), std::min(a, b), 1.0);
+  };
+  for (size_t k = 0; k < rods.size(); ++k)
+    for (int i = 0; s.touched[k] && i < rods[k].activeNodes; ++i) {
+      const int n = 2 * (s.firstNode[k] + i);
+      // The diagonal too: Eigen's minimum-degree ordering returns the
+      // identity for a graph without it.
+      c.links.emplace_back(n, n, 1.0);
+      c.links.emplace_back(n + 1, n + 1, 1.0);
+      link(n, n + 1);
+      if (i + 1 < rods[k].activeNodes)
+        for (int a = 0; a < 2; ++a)
+          for (int b = 0; b < 2; ++b) link(n + a, n + 2 + b);
+    }
+  for (const PairSolveScratch::Row& row : s.rows)
+    for (int e = row.first; e < row.first + row.count; ++e)
+      for (int f = row.first; f < e; ++f) {
+        const PairSolveScratch::Entry &a = s.entries[size_t(e)], &b = s.entries[size_t(f)];
+        link(2 * (s.firstNode[size_t(a.rod)] + a.node), 2 * (s.firstNode[size_t(b.rod)] + b.node));
+      }
+  c.graph.resize(2 * nodes, 2 * nodes);
+  c.graph.setFromTriplets(c.links.begin(), c.links.end());
+  // The ordering's permutation maps a place in the order to a part.
+  Eigen::AMDOrdering<int>()(c.graph, c.order);
+  s.slot.resize(size_t(2 * nodes));
+  for (int place = 0; place < 2 * nodes; ++place) s.slot[size_t(c.order.indices()(place))] = place;
+  return nodes;
+}
+
+// Unknown a (0-2 translations, 3-5 rotations) of node i of rod k, in the whole system.
+int unknown(const PairSolveScratch& s, size_t k, int i, int a) {
+  return 3 * s.slot[size_t(2 * (s.firstNode[k] + i) + a / 3)] + a % 3;
+}
+
+// Adds value at (i, j) of the symmetric matrix to its upper triangle.
+void addUpper(std::vector<Triplet>& out, int i, int j, double value) {
+  out.emplace_back(std::min(i, j), std::max(i, j), value);
+}
+
+// Rod k's band (both triangles' worth, each entry once).
+void addBand(const RodState& r, size_t k, const PairSolveScratch& s, std::vector<Triplet>& out) {
   const BlockTridiagonal& a = r.work.system;
   for (int i = 0; i < r.activeNodes; ++i) {
-    const int at = first + 6 * i;
     for (int col = 0; col < 6; ++col)
       for (int row = col; row < 6; ++row)
-        if (a.diag[size_t(i)](row, col) != 0) out.emplace_back(at + row, at + col, a.diag[size_t(i)](row, col));
+        if (a.diag[size_t(i)](row, col) != 0)
+          addUpper(out, unknown(s, k, i, row), unknown(s, k, i, col), a.diag[size_t(i)](row, col));
     if (i + 1 < r.activeNodes)
       for (int col = 0; col < 6; ++col)
         for (int row = 0; row < 6; ++row)
-          if (a.lower[size_t(i)](row, col) != 0) out.emplace_back(at + 6 + row, at + col, a.lower[size_t(i)](row, col));
+          if (a.lower[size_t(i)](row, col) != 0)
+            addUpper(out, unknown(s, k, i + 1, row), unknown(s, k, i, col), a.lower[size_t(i)](row, col));
   }
+}
+
+// Whether the matrix has the pattern the factor was analysed for.
+bool samePattern(const PairFactorCache::Impl& c) {
+  const SparseMatrix& m = c.matrix;
+  return c.analysed && c.outer.size() == size_t(m.outerSize() + 1) && c.inner.size() == size_t(m.nonZeros()) &&
+         std::equal(c.outer.begin(), c.outer.end(), m.outerIndexPtr()) &&
+         std::equal(c.inner.begin(), c.inner.end(), m.innerIndexPtr());
 }
 
 }  // namespace
@@ -117,43 +213,53 @@ std::optional<Failure> solvePairsCoupled(const Model& model, std::vector<RodStat
     w.solver.solve(w.rhs);
   }
   if (s.rows.empty()) return std::nullopt;
-  // The touched rods one after another, each node's six unknowns together.
-  s.offset.assign(rods.size(), -1);
-  int unknowns = 0;
+  PairFactorCache::Impl& c = s.factor.impl();
+  const int unknowns = 6 * orderNodes(rods, s, c);
+  c.triplets.clear();
   for (size_t k = 0; k < rods.size(); ++k)
-    if (s.touched[k]) s.offset[k] = unknowns, unknowns += 6 * rods[k].activeNodes;
-  std::vector<Triplet> triplets;
-  for (size_t k = 0; k < rods.size(); ++k)
-    if (s.touched[k]) addBand(rods[k], s.offset[k], triplets);
-  // Each row's q beta beta^T, lower triangle (its entries' translations).
+    if (s.touched[k]) addBand(rods[k], k, s, c.triplets);
+  // Each row's q beta beta^T (its entries' translations), each pair of
+  // unknowns once.
   for (const PairSolveScratch::Row& row : s.rows)
     for (int e = row.first; e < row.first + row.count; ++e) {
       const PairSolveScratch::Entry& a = s.entries[size_t(e)];
-      const int ia = s.offset[size_t(a.rod)] + 6 * a.node;
       for (int f = row.first; f < row.first + row.count; ++f) {
         const PairSolveScratch::Entry& b = s.entries[size_t(f)];
-        const int ib = s.offset[size_t(b.rod)] + 6 * b.node;
         for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j)
-            if (ia + i >= ib + j && a.coeff[i] * b.coeff[j] != 0)
-              triplets.emplace_back(ia + i, ib + j, row.stiffness * a.coeff[i] * b.coeff[j]);
+          for (int j = 0; j < 3; ++j) {
+            const int ia = unknown(s, size_t(a.rod), a.node, i), ib = unknown(s, size_t(b.rod), b.node, j);
+            if (ia <= ib && a.coeff[i] * b.coeff[j] != 0)
+              c.triplets.emplace_back(ia, ib, row.stiffness * a.coeff[i] * b.coeff[j]);
+          }
       }
     }
-  Eigen::SparseMatrix<double> matrix(unknowns, unknowns);
-  matrix.setFromTriplets(triplets.begin(), triplets.end());
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> factor(matrix);
+  c.matrix.resize(unknowns, unknowns);
+  c.matrix.setFromTriplets(c.triplets.begin(), c.triplets.end());
+  if (!samePattern(c)) {
+    c.factor.analyzePattern(c.matrix);
+    c.outer.assign(c.matrix.outerIndexPtr(), c.matrix.outerIndexPtr() + c.matrix.outerSize() + 1);
+    c.inner.assign(c.matrix.innerIndexPtr(), c.matrix.innerIndexPtr() + c.matrix.nonZeros());
+    c.analysed = true;
+  }
+  c.factor.factorize(c.matrix);
   const int first = s.entries.front().rod;
-  if (factor.info() != Eigen::Success || !(factor.vectorD().minCoeff() > 0))
+  if (c.factor.info() != Eigen::Success || !(c.factor.vectorD().minCoeff() > 0)) {
+    c.analysed = false;
     return solverFailure(model, first, "pair contacts: the coupled implicit matrix is not positive definite");
-  Eigen::VectorXd rhs(unknowns);
+  }
+  c.rhs.resize(unknowns);
   for (size_t k = 0; k < rods.size(); ++k)
-    for (int i = 0; s.touched[k] && i < rods[k].activeNodes; ++i)
-      rhs.segment<6>(s.offset[k] + 6 * i) = rods[k].work.rhs[size_t(i)];
-  const Eigen::VectorXd dv = factor.solve(rhs);
-  if (!dv.allFinite()) return solverFailure(model, first, "pair contacts: the coupled solve gave non-finite velocities");
+    for (int i = 0; s.touched[k] && i < rods[k].activeNodes; ++i) {
+      c.rhs.segment<3>(unknown(s, k, i, 0)) = rods[k].work.rhs[size_t(i)].head<3>();
+      c.rhs.segment<3>(unknown(s, k, i, 3)) = rods[k].work.rhs[size_t(i)].tail<3>();
+    }
+  c.dv = c.factor.solve(c.rhs);
+  if (!c.dv.allFinite()) return solverFailure(model, first, "pair contacts: the coupled solve gave non-finite velocities");
   for (size_t k = 0; k < rods.size(); ++k)
-    for (int i = 0; s.touched[k] && i < rods[k].activeNodes; ++i)
-      rods[k].work.rhs[size_t(i)] = dv.segment<6>(s.offset[k] + 6 * i);
+    for (int i = 0; s.touched[k] && i < rods[k].activeNodes; ++i) {
+      rods[k].work.rhs[size_t(i)].head<3>() = c.dv.segment<3>(unknown(s, k, i, 0));
+      rods[k].work.rhs[size_t(i)].tail<3>() = c.dv.segment<3>(unknown(s, k, i, 3));
+    }
   return std::nullopt;
 }
 

@@ -16,13 +16,17 @@
 // whole system
 //   (A + B^T Q B) dv = rhs
 // of the rods the contacts touch is factorised as one sparse matrix
-// (Eigen's simplicial LDL^T, fill-reducing AMD ordering: the bands are
-// chains, the contacts a few hundred links between them). Conjugate
+// (Eigen's simplicial LDL^T), its unknowns ordered by a fill-reducing AMD
+// ordering of the graph of its nodes' translations and rotations, three
+// unknowns each (the bands are chains, the contacts a few hundred links
+// between them; ordering the 9 times larger graph of the unknowns
+// themselves cost more than the factorisation). Conjugate
 // gradients on its Schur complement on the contacts, tried first, needed
 // up to 1000 iterations in a packing: the contacts' compliance 1 / (h^2 k)
 // is 20 /kg against 1e7 /kg for a free node, and rows sharing nodes leave
 // the complement badly conditioned for any diagonal preconditioner
 // (docs/contact.md). Rods no contact touches are solved by their own band.
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -55,6 +59,27 @@ struct PairCoupling {
   double radius = 0, springFrom = 0;  // m
 };
 
+// The coupled system's sparse matrix and factorisation, kept between
+// solves so that their storage is reused and, while the matrix keeps its
+// sparsity pattern, its symbolic analysis too (the same arithmetic as a
+// fresh factorisation, so a run's result does not depend on it). A copy
+// (a State copied for a plan candidate, a fit or a snapshot) starts empty.
+class PairFactorCache {
+ public:
+  PairFactorCache();
+  ~PairFactorCache();
+  PairFactorCache(const PairFactorCache&);
+  PairFactorCache& operator=(const PairFactorCache&);
+  PairFactorCache(PairFactorCache&&) noexcept;
+  PairFactorCache& operator=(PairFactorCache&&) noexcept;
+
+  struct Impl;
+  Impl& impl();  // created on first use
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
 // Scratch of the coupled solve, sized by use and kept between steps.
 struct PairSolveScratch {
   struct Entry {
@@ -68,8 +93,10 @@ struct PairSolveScratch {
   std::vector<Entry> entries;
   std::vector<Row> rows;
   std::vector<char> touched;  // (nrod) rods that some row touches
-  std::vector<int> offset;    // (nrod) a touched rod's first unknown in the whole system
+  std::vector<int> firstNode; // (nrod) a touched rod's first node in the whole system's node numbering
+  std::vector<int> slot;      // (2 x nodes of the touched rods) each node's translations' and rotations' place in the elimination order
   std::vector<char> stepped;  // (nrod) rods the step integrates (dynamics.cpp)
+  PairFactorCache factor;
 };
 
 // Counters of the coupled solves, for the bench and the tests.
