@@ -9,12 +9,16 @@
 //   icosphere's face planes (exact for a point inside a convex polyhedron;
 //   a segment is nearest a plane at an end), at every 10th step. With the
 //   contacts off the same checks fail (the control).
-// - at rest, the reported wall load (State::stats.wallLoad, the sustained
-//   figure) converges as the wall and coil-coil penalties stiffen from one
-//   settled State (Richardson in 1 / k, at two settled States), and the
-//   wall's total normal force against the coils' weight less their
-//   upthrust (statics: the external forces on a coil at rest sum to zero;
-//   the pair contacts are internal) is printed, not yet asserted.
+// - at rest, with the pair contacts solved coupled, the reported wall load
+//   (State::stats.wallLoad, the sustained figure) converges as the wall and
+//   coil-coil penalties stiffen from one settled State, and the wall's
+//   reported force is the packing's momentum balance. Under the lumped
+//   pair law (the default) the packing is not at rest: it creeps and
+//   erupts by itself (at 4 times its penalties; built without fused
+//   multiply-adds, as the sanitizer build is, at 1 and 2 times), so a
+//   convergence seen from it depends on the build's rounding, not on the
+//   law, and is not asserted (docs/contact.md, Known problems, "A dense
+//   packing at rest presses the wall with more than its weight").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -107,78 +111,20 @@ TEST(DensePacking, WithoutContactsTheSameChecksFail) {
   EXPECT_GT(run.deepest.wall, 0.0);
 }
 
-TEST(DensePacking, TheWallLoadAtRestConvergesUnderPenaltyRefinement) {
-  // Frictionless wall: its force is then all normal, which is what the
-  // nodes report, so statics can check it (coil-coil friction is internal
-  // and stays). Mass damping settles it sooner and moves no equilibrium.
-  ModelDef def = packedSac(true);
-  def.damping.massCoeff = 20;
-  // The wall's penalty, named: Richardson in 1 / k holds for a penalty in
-  // series with the wires' compliance; a wall held by constraints
-  // (rigid = 1) has no k, only the pair penalties move, and its load is not
-  // first order in 1 / k (docs/contact.md, "Why a constraint per node").
-  for (EffectUse& e : def.effects)
-    if (e.name() == "wall_contact") e.set("rigid", 0.0);
-  Model model = compileModel(def);
-  const double weight = netWeight(def);
-  // The settled packing depends on every rounding on the way (a build at
-  // another optimisation level settles into another one), so the check is
-  // made on two settled States, 0.9 s and 1.2 s, each its own packing.
-  State settled = makeState(model);
-  int stepped = 0;
-  for (const int settle : {900, 1200}) {
-    for (; stepped < settle; ++stepped) ASSERT_TRUE(step(model, settled).ok()) << "settling, step " << stepped;
-    // From the one settled State, 0.2 s more with every penalty at 1/2, 1
-    // and 2 times its registered value (separately settled packings would
-    // end in different shapes: docs/contact.md). Not 4 times: at this step
-    // the pair contacts' lumped stiffness is then near its stability limit
-    // and a settled packing can erupt by itself (docs/contact.md).
-    double loads[3];
-    Vec3 wall[3];
-    for (int i = 0; i < 3; ++i) {
-      const double factor = 0.5 * double(1 << i);
-      scalePenalties(model, factor);
-      State s = settled;
-      for (int k = 0; k < 200; ++k) ASSERT_TRUE(step(model, s).ok()) << "x" << factor << " step " << k;
-      loads[i] = s.stats.wallLoad.now;
-      wall[i] = wallNormalTotal(s);
-      std::printf("[ measured ] settled %.1f s, penalties x%g: sustained wall load %.4f mN, fastest node %.3g mm/s, "
-                  "wall's total normal force (%.4f, %.4f, %.4f) mN against weight less upthrust %.4f mN, ratio %.3f\n",
-                  settle * def.timeStep, factor, loads[i] * 1e3, fastestNode(s) * 1e3, wall[i].x() * 1e3,
-                  wall[i].y() * 1e3, wall[i].z() * 1e3, weight * 1e3, wall[i].z() / weight);
-      EXPECT_LT(fastestNode(s), 1e-3) << "x" << factor << ": not at rest, the load would be a transient's";
-    }
-    scalePenalties(model, 1);
-    // The issue's criterion: doubling the registered stiffness changes the
-    // figure by less than 10 %.
-    EXPECT_LT(std::abs(loads[2] - loads[1]), 0.1 * loads[2]) << "settled " << settle << " steps";
-    // A load carried by the wires' elasticity and weight, the penalty's
-    // compliance in series: its error is first order in 1 / k. Richardson
-    // from k/2 and k gives the limit, and 2k must lie where that predicts,
-    // within 2 % of the limit (the cantilever's tolerance, WallLoad tests).
-    const double limit = 2 * loads[1] - loads[0], predicted = 0.5 * (limit + loads[1]);
-    std::printf("[ measured ] settled %.1f s: Richardson limit %.4f mN, predicted at 2k %.4f mN, got %.4f mN\n",
-                settle * def.timeStep, limit * 1e3, predicted * 1e3, loads[2] * 1e3);
-    EXPECT_NEAR(loads[2], predicted, 0.02 * std::abs(limit)) << "settled " << settle << " steps";
-  }
-  // Statics is not asserted here: at the 1 ms step the wall carries 1.6-1.9
-  // times the weight less upthrust (the pair contacts' lumped stiffness
-  // anchors the packing and it creeps for seconds): docs/contact.md, Known
-  // problems, "A dense packing at rest presses the wall with more than its
-  // weight". The ratio is printed above so that it is seen in every run.
-}
-
 // The same scene with its pair contacts solved coupled (Model::coupledPairs,
 // physics/pair_coupling.h) and the contact set decided within the step
 // (physics/pair_contact_set.h), settled from the laid state; the wall's
-// force reported as the solve applied it. The lumped solve's packing above
-// erupts by itself at 4 times its penalties and, built without fused
-// multiply-adds, at 1 and 2 times (docs/contact.md); here each doubling up
+// force reported as the solve applied it. Where the lumped solve's packing
+// erupts by itself (4 times its penalties; built without fused
+// multiply-adds, 1 and 2 times: docs/contact.md), here each doubling up
 // to 8 times changes the sustained wall load by less than the issue's 10 %
 // with the packing at rest, no step is refused, and the wires stay apart
 // and inside the wall (the independent checks of the first test, every 10
 // steps). At 8 times it chattered on the wall while the solve could pull
-// a pair's sides together (docs/contact.md, "Pairs let go").
+// a pair's sides together (docs/contact.md, "Pairs let go"). Not Richardson
+// in 1 / k, as for a penalty in series with the wires: under the coupled
+// solve the load moves by 0.2-3 % per doubling, not monotonically, within
+// the spread between settled packings (docs/contact.md, Known problems).
 TEST(DensePacking, CoupledPairContactsKeepTheWallLoadConvergedUpToEightTimesThePenalties) {
   ModelDef def = packedSac(true);
   def.damping.massCoeff = 20;
