@@ -32,6 +32,25 @@ double wallMicroseconds() {
                            std::chrono::steady_clock::now().time_since_epoch()).count());
 }
 
+// Steps State a under model ma and State b under mb alternately, `steps`
+// times each, so that a machine whose speed drifts affects both alike;
+// adds each one's thread CPU time per step to usA and usB. Returns whether
+// every step was taken.
+bool timeAlternately(const Model& ma, State& a, const Model& mb, State& b, int steps, double& usA, double& usB) {
+  bool ok = true;
+  double spentA = 0, spentB = 0;
+  for (int i = 0; i < steps; ++i) {
+    double t0 = cpuMicroseconds();
+    ok = step(ma, a).ok() && ok;
+    spentA += cpuMicroseconds() - t0;
+    t0 = cpuMicroseconds();
+    ok = step(mb, b).ok() && ok;
+    spentB += cpuMicroseconds() - t0;
+  }
+  usA += spentA / steps, usB += spentB / steps;
+  return ok;
+}
+
 bool isContact(const EffectUse& u) {
   return u.name() == "wall_contact" || u.name() == "self_contact" || u.name() == "rod_contact";
 }
@@ -93,15 +112,7 @@ SleepingCase benchSleeping(int asleepMm, int steps) {
   c.rodsAsleep = int(std::count(sleeps.begin(), sleeps.end(), true));
   Model awakeModel = model;
   awakeModel.sleep.enabled = false;
-  for (int i = 0; i < steps; ++i) {
-    double t0 = cpuMicroseconds();
-    c.ok = step(awakeModel, awake).ok() && c.ok;
-    c.awakeUs += cpuMicroseconds() - t0;
-    t0 = cpuMicroseconds();
-    c.ok = step(model, asleep).ok() && c.ok;
-    c.asleepUs += cpuMicroseconds() - t0;
-  }
-  c.awakeUs /= steps, c.asleepUs /= steps;
+  c.ok = timeAlternately(awakeModel, awake, model, asleep, steps, c.awakeUs, c.asleepUs) && c.ok;
   c.wakes = asleep.sleep.wakes;
   return c;
 }
@@ -128,15 +139,7 @@ CoupledCase benchCoupled(int mm, int settle, int steps) {
   for (int i = 0; i < settle; ++i) c.ok = step(coupled, start).ok() && c.ok;
   start.stats.pairSolve = {};
   State a = start, b = start;
-  for (int i = 0; i < steps; ++i) {
-    double t0 = cpuMicroseconds();
-    c.ok = step(lumped, a).ok() && c.ok;
-    c.lumpedUs += cpuMicroseconds() - t0;
-    t0 = cpuMicroseconds();
-    c.ok = step(coupled, b).ok() && c.ok;
-    c.coupledUs += cpuMicroseconds() - t0;
-  }
-  c.lumpedUs /= steps, c.coupledUs /= steps;
+  c.ok = timeAlternately(lumped, a, coupled, b, steps, c.lumpedUs, c.coupledUs) && c.ok;
   const PairSolveStats& p = b.stats.pairSolve;
   c.solvesPerStep = double(p.solves) / steps;
   c.rowsPerSolve = p.solves ? double(p.rows) / double(p.solves) : 0.0;
