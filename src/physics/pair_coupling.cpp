@@ -16,8 +16,7 @@ struct PairFactorCache::Impl {
   std::vector<Eigen::Triplet<double>> triplets;
   SparseMatrix matrix;
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>> factor;
-  std::vector<int> outer, inner;  // the pattern the factor's symbolic analysis was made for
-  bool analysed = false;
+  std::vector<int> outer, inner;  // the pattern the factor's symbolic analysis was made for (empty: none yet)
   SparseMatrix graph;  // the nodes' graph, for their ordering
   std::vector<Eigen::Triplet<double>> links;
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;
@@ -192,7 +191,7 @@ void addBand(const RodState& r, size_t k, const PairSolveScratch& s, std::vector
 // Whether the matrix has the pattern the factor was analysed for.
 bool samePattern(const PairFactorCache::Impl& c) {
   const SparseMatrix& m = c.matrix;
-  return c.analysed && c.outer.size() == size_t(m.outerSize() + 1) && c.inner.size() == size_t(m.nonZeros()) &&
+  return c.outer.size() == size_t(m.outerSize() + 1) && c.inner.size() == size_t(m.nonZeros()) &&
          std::equal(c.outer.begin(), c.outer.end(), m.outerIndexPtr()) &&
          std::equal(c.inner.begin(), c.inner.end(), m.innerIndexPtr());
 }
@@ -239,14 +238,11 @@ std::optional<Failure> solvePairsCoupled(const Model& model, std::vector<RodStat
     c.factor.analyzePattern(c.matrix);
     c.outer.assign(c.matrix.outerIndexPtr(), c.matrix.outerIndexPtr() + c.matrix.outerSize() + 1);
     c.inner.assign(c.matrix.innerIndexPtr(), c.matrix.innerIndexPtr() + c.matrix.nonZeros());
-    c.analysed = true;
   }
   c.factor.factorize(c.matrix);
   const int first = s.entries.front().rod;
-  if (c.factor.info() != Eigen::Success || !(c.factor.vectorD().minCoeff() > 0)) {
-    c.analysed = false;
+  if (c.factor.info() != Eigen::Success || !(c.factor.vectorD().minCoeff() > 0))
     return solverFailure(model, first, "pair contacts: the coupled implicit matrix is not positive definite");
-  }
   c.rhs.resize(unknowns);
   for (size_t k = 0; k < rods.size(); ++k)
     for (int i = 0; s.touched[k] && i < rods[k].activeNodes; ++i) {
