@@ -2,7 +2,7 @@
 // (fastest push and pull, fastest twists, retraction, detach attempts, stops)
 // for many simulated seconds on a case with contacts. What must hold however
 // the inputs come: every refused command or refused step is reported (score
-// sheet), the wire never goes into the wall beyond its contact skin, and
+// sheet), the wire goes no deeper into the wall than its contact skin is thick, and
 // memory does not grow with simulated time.
 #include <fstream>
 #include <random>
@@ -81,7 +81,7 @@ TEST(Soak, RandomCommandsAtTheLimitsAreAllAccountedForAndStayOutOfTheWall) {
   if (stepRefused) {
     EXPECT_FALSE(sheet.error.empty());
   }
-  // The wire itself stays out of the wall (its skin may be pressed).
+  // The wire itself goes no deeper past the wall's faces than its contact skin is thick.
   const StepStats& st = session.state().stats;
   std::printf("[ measured ] %zu device messages (%ld refused at once), deepest wall penetration %.3g um = %.3g of r, "
               "%s\n", sheet.deviceMessages.size(), refusedCommands, st.maxWallPenetration * 1e6,
