@@ -100,6 +100,15 @@ Quat coilFrameAtTip(const Deployment& dep, const RodState& chain, double twist) 
   return (chain.q[dep.tipNode] * twistAboutTangent(twist)).normalized();
 }
 
+Vec3 coilForceOnTip(const Deployment& dep, const State& state) {
+  const RodState& chain = state.rods[size_t(dep.chainRod)];
+  const size_t t = size_t(dep.tipNode);  // the coil leaves the tip node through beam t
+  if (chain.activeNodes < dep.tipNode + 2) return Vec3::Zero();
+  BeamEval e;
+  evalBeam(chain.beams[t], chain.x[t], chain.q[t], chain.x[t + 1], chain.q[t + 1], false, e);
+  return e.forceA.head<3>();  // the beam's restoring force on the tip node
+}
+
 void Deployment::restPose(double j, Vec3& x, Quat& f) const {
   j = std::clamp(j, 0.0, double(coilBeams));
   const int j0 = std::min(int(std::floor(j)), coilBeams - 1);

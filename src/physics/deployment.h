@@ -57,6 +57,10 @@ void slideDeployment(const Model& model, State& state, double deployed, double t
 // The frame the coil has at the tip: the tip node's frame turned by the twist.
 Quat coilFrameAtTip(const Deployment& dep, const RodState& chain, double twist);
 
+// The elastic force of the first beam outside the catheter on the tip node:
+// what the coil does to the catheter, N (zero with nothing outside).
+Vec3 coilForceOnTip(const Deployment& dep, const State& state);
+
 // Moves the catheter back by `offset` m along its held base's axis (the
 // exit direction for the rigid tip; the pusher holds the coil, so the
 // deployed length grows by the same amount).

@@ -111,6 +111,7 @@ struct DeviceMotion {
   double twistRate = 0, twistLeft = 0;    // rad/s (signed), rad
   double retractRate = 0, retractLeft = 0;
   bool pendingDetach = false;
+  double caughtFor = 0;  // s a pull has strained the coil at the tip beyond what a free coil takes (run.cpp)
   bool moving() const { return pushRate != 0 || twistRate != 0 || retractRate != 0; }
 };
 

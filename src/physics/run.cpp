@@ -91,6 +91,30 @@ std::optional<Failure> command(const Model& model, State& state, const DeviceCom
   return refusal("unknown command");
 }
 
+// How deep, as a fraction of the two wires' radii, the catheter tip may
+// press a wire that rests on a wall before a retraction stops (moveDevice).
+constexpr double kPinnedWire = 0.01;
+
+// A pull draws the coil in with whatever force it takes. A coil pulled
+// freely through the sac is held back at the tip by its drag, millinewtons;
+// one caught (a loop wedged between the tip and the wall, or on the coil's
+// own loops) is pulled ever harder, and the pull squeezed it into the wall
+// (docs/contact.md, "Three more ways past the skin"). So a pull stops once
+// the tension stays above kCaughtTension for kCaughtTime: longer than the
+// one-step spikes, up to tens of newtons, that a node drawn in at the tip
+// gives.
+constexpr double kCaughtTension = 0.1;  // N
+constexpr double kCaughtTime = 0.005;   // s
+
+// Whether the coil pulls on the catheter tip, along its first beam, harder than kCaughtTension.
+bool caughtAtTip(const Deployment& dep, const State& state) {
+  const RodState& chain = state.rods[size_t(dep.chainRod)];
+  const size_t t = size_t(dep.tipNode);
+  if (chain.activeNodes < dep.tipNode + 2) return false;
+  const Vec3 out = (chain.x[t + 1] - chain.x[t]).normalized();
+  return coilForceOnTip(dep, state).dot(out) > kCaughtTension;
+}
+
 void moveDevice(const Model& model, State& state) {
   if (!model.device) return;
   const double dt = model.timeStep;
@@ -116,9 +140,17 @@ void moveDevice(const Model& model, State& state) {
     const Vec3 tipNow = ds.tipStart - ds.tipOffset * dep.retractDirection;
     const double before = wallClearance(model, tipNow, keep + 2 * step);
     const double after = wallClearance(model, tipNow - step * dep.retractDirection, keep + 2 * step);
+    // Nor may it pin the coil against a wall: a loop lying on the wall
+    // behind the tip was squeezed into it (docs/contact.md, "Three more ways
+    // past the skin").
+    const double pinned =
+        pinnedWireDepth(state, dep.chainRod, dep.tipNode, -std::copysign(step, m.retractRate) * dep.retractDirection);
     if (after < keep && after < before) {
       m.retractRate = 0, m.retractLeft = 0;
       notes.push_back("the catheter tip is at the wall: retraction stopped");
+    } else if (pinned > kPinnedWire) {
+      m.retractRate = 0, m.retractLeft = 0;
+      notes.push_back("the catheter tip pins the coil against the wall: retraction stopped");
     } else {
       const double d = advanceBy(m.retractRate, m.retractLeft, dt);
       setTipOffset(model, state, ds.tipOffset + d);
@@ -126,7 +158,11 @@ void moveDevice(const Model& model, State& state) {
       if (m.retractLeft == 0) m.retractRate = 0;
     }
   }
-  if (m.pushRate != 0) {
+  m.caughtFor = m.pushRate < 0 && caughtAtTip(dep, state) ? m.caughtFor + dt : 0.0;
+  if (m.caughtFor >= kCaughtTime) {
+    m.pushRate = 0, m.pushLeft = 0, m.caughtFor = 0;
+    notes.push_back("the coil is caught: pull stopped");
+  } else if (m.pushRate != 0) {
     deployed += advanceBy(m.pushRate, m.pushLeft, dt);
     if (m.pushLeft == 0) m.pushRate = 0;
   }

@@ -9,7 +9,6 @@
 #include <memory>
 
 #include "io/units.h"
-#include "physics/beam.h"
 #include "physics/integrator.h"
 
 namespace coilsim::planning {
@@ -41,16 +40,7 @@ struct Clock {
 
 }  // namespace
 
-Vec3 tipForce(const Deployment& dep, const State& state) {
-  const RodState& chain = state.rods[size_t(dep.chainRod)];
-  const int t = dep.tipNode;  // the catheter tip node; the coil leaves it through beam t
-  if (chain.activeNodes < t + 2) return Vec3::Zero();
-  BeamEval e;
-  evalBeam(chain.beams[size_t(t)], chain.x[size_t(t)], chain.q[size_t(t)], chain.x[size_t(t) + 1], chain.q[size_t(t) + 1],
-           false, e);
-  // forceA is the beam's restoring force on the tip node: what the coil does to the catheter.
-  return e.forceA.head<3>();
-}
+Vec3 tipForce(const Deployment& dep, const State& state) { return coilForceOnTip(dep, state); }
 
 bool FeltTipForce::add(const Deployment& dep, const State& state, bool still, double dt) {
   if (!still) {
