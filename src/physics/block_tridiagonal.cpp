@@ -51,7 +51,6 @@ inline void multiplyTransposed6(const Mat6& a, const Mat6& b, Mat6& c) {
 
 // Eigen's fixed 6x6 matrices are column-major: element (r, c) is at [c * 6 + r].
 inline double& at(Mat6& m, int r, int c) { return m.data()[c * 6 + r]; }
-inline double at(const Mat6& m, int r, int c) { return m.data()[c * 6 + r]; }
 
 // Inverse of the lower Cholesky factor of an SPD 6x6 block, computed in
 // place: `a` becomes C^{-1} (lower triangular, strict upper part zero).

@@ -18,8 +18,6 @@
 namespace coilsim::ui {
 namespace {
 
-constexpr double kDt = 1e-3;
-
 // A platinum helix of `lengthMm` in a rigid catheter at the origin along +x, 2 mm out.
 using Scene = test::HelixDeployment;
 

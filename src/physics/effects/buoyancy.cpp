@@ -36,8 +36,10 @@ class Buoyancy final : public Effect {
   }
   // Fitted from none (off) to water at least; plausible from air to contrast agent (1.4 g/cm3).
   std::optional<Diagnosable> diagnosis(const SetupHint& setup) const override {
-    return Diagnosable{{{kParams[kDensity].name, 0.0, std::max(setup.mediumDensity, 1000.0), 0.0, 1500.0}},
-                       {{kParams[kDensity].name, setup.mediumDensity}}};
+    Diagnosable d;
+    d.fit = {{kParams[kDensity].name, 0.0, std::max(setup.mediumDensity, 1000.0), 0.0, 1500.0}};
+    d.fromSetup = {{kParams[kDensity].name, setup.mediumDensity}};
+    return d;
   }
 };
 

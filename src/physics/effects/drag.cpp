@@ -42,8 +42,10 @@ class Drag final : public Effect {
   }
   // Fitted from none (off) to a viscous medium; plausible from air to glycerol (1.4 Pa s).
   std::optional<Diagnosable> diagnosis(const SetupHint& setup) const override {
-    return Diagnosable{{{kParams[kViscosity].name, 0.0, std::max(setup.mediumViscosity, 0.01), 0.0, 2.0}},
-                       {{kParams[kViscosity].name, setup.mediumViscosity}}};
+    Diagnosable d;
+    d.fit = {{kParams[kViscosity].name, 0.0, std::max(setup.mediumViscosity, 0.01), 0.0, 2.0}};
+    d.fromSetup = {{kParams[kViscosity].name, setup.mediumViscosity}};
+    return d;
   }
 };
 

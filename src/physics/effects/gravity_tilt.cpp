@@ -51,8 +51,9 @@ class GravityTilt final : public Effect {
   // Level is off; a bench set up by eye is level within a few degrees.
   std::optional<Diagnosable> diagnosis(const SetupHint&) const override {
     const double typical = 1.0 * kRadPerDeg, band = 5.0 * kRadPerDeg;
-    return Diagnosable{{{kParams[kTiltA].name, 0.0, typical, -band, band},
-                        {kParams[kTiltB].name, 0.0, typical, -band, band}}, {}};
+    Diagnosable d;
+    d.fit = {{kParams[kTiltA].name, 0.0, typical, -band, band}, {kParams[kTiltB].name, 0.0, typical, -band, band}};
+    return d;
   }
 };
 
