@@ -1,4 +1,5 @@
 #include "validation/adequacy.h"
+#include "validation/random_vector.h"
 #include "validation/text.h"
 
 #include <cmath>
@@ -40,7 +41,7 @@ void noiseFloor(const Comparison& cmp, const std::vector<StageComparison>& stage
     for (size_t k = 0; k < n; ++k) {
       const double sigma = cmp.stageSigma(k);
       for (size_t i = 0; i < at[k].size(); ++i)
-        b.stages[k].centerline[i] = cmp.spline(k).at(at[k][i]) + sigma * Vec3(z(rng), z(rng), z(rng));
+        b.stages[k].centerline[i] = cmp.spline(k).at(at[k][i]) + sigma * drawVec3(z, rng);
     }
     const Comparison bc(b);
     const std::vector<StageComparison> s = bc.compare(perfect);

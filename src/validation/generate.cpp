@@ -1,4 +1,5 @@
 #include "validation/generate.h"
+#include "validation/random_vector.h"
 
 #include <random>
 #include <stdexcept>
@@ -46,10 +47,10 @@ Measurement generateMeasurement(const Measurement& skeleton, const ModelParams& 
     // error at the last node of the shipped example's stages 1 and 2).
     double s = 0;
     for (; s < end - 0.25 * o.minGap; s += gap(rng)) {
-      const Vec3 e(noise(rng), noise(rng), noise(rng));
+      const Vec3 e = drawVec3(noise, rng);
       st.centerline.push_back(along(runs[k], s) + (o.sigma > 0 ? e : Vec3::Zero()));
     }
-    const Vec3 e(noise(rng), noise(rng), noise(rng));
+    const Vec3 e = drawVec3(noise, rng);
     st.centerline.push_back(along(runs[k], end) + (o.sigma > 0 ? e : Vec3::Zero()));
   }
   return m;

@@ -1,6 +1,7 @@
 // The smoothing spline against curves whose arc length is known in closed
 // form: a straight line (reproduced exactly: the penalty does not act on
 // lines) and a circle (s = R theta), unevenly sampled, with and without noise.
+#include "validation/random_vector.h"
 #include "validation/spline.h"
 
 #include <gtest/gtest.h>
@@ -43,7 +44,7 @@ TEST(SmoothingSpline, NoisyCircleIsSmoothedToTheNoiseLevelAndArcLengthKept) {
   std::vector<Vec3> pts;
   double sLast = 0;
   for (double s = 0; s < 4 * M_PI * R; s += gap(rng)) {
-    pts.push_back(R * Vec3(std::sin(s / R), 1 - std::cos(s / R), 0) + Vec3(noise(rng), noise(rng), noise(rng)));
+    pts.push_back(R * Vec3(std::sin(s / R), 1 - std::cos(s / R), 0) + drawVec3(noise, rng));
     sLast = s;
   }
   const SmoothingSpline sp(pts, {sigma});
@@ -67,7 +68,7 @@ TEST(SmoothingSpline, NoiseEstimateOnAStraightLine) {
   std::mt19937 rng(3);
   std::normal_distribution<double> noise(0, 0.05e-3);
   std::vector<Vec3> pts;
-  for (int i = 0; i < 400; ++i) pts.push_back(Vec3(i * 1e-3, 0, 0) + Vec3(noise(rng), noise(rng), noise(rng)));
+  for (int i = 0; i < 400; ++i) pts.push_back(Vec3(i * 1e-3, 0, 0) + drawVec3(noise, rng));
   EXPECT_NEAR(estimateNoise(pts), 0.05e-3, 0.006e-3);
 }
 
