@@ -9,7 +9,15 @@
 #include <string>
 
 #include <gtest/gtest.h>
-#ifdef __SANITIZE_ADDRESS__
+// GCC says __SANITIZE_ADDRESS__, clang __has_feature(address_sanitizer).
+#if defined(__SANITIZE_ADDRESS__)
+#define COILSIM_TEST_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define COILSIM_TEST_ASAN 1
+#endif
+#endif
+#ifdef COILSIM_TEST_ASAN
 // The ASan runtime's own (sanitizer/allocator_interface.h, which GCC does not ship).
 extern "C" size_t __sanitizer_get_current_allocated_bytes();
 #endif
@@ -27,7 +35,7 @@ const std::string kCase = std::string(COILSIM_SOURCE_DIR) + "/scenes/cases/spher
 // (Linux /proc). Under AddressSanitizer the live heap instead: the resident
 // set there also holds the quarantine of freed blocks (256 MB by default),
 // which fills during the run without anything being kept.
-#ifdef __SANITIZE_ADDRESS__
+#ifdef COILSIM_TEST_ASAN
 long heldBytes() { return long(__sanitizer_get_current_allocated_bytes()); }
 #else
 long heldBytes() {
